@@ -1,0 +1,63 @@
+// Package initialisation: registers boltnet's PETSc types once per PetscInitialize.
+#include "boltnet.h"
+#include "core/compat.h"
+#include "joint/law.hpp"
+
+extern "C" PetscErrorCode SNESLineSearchCreate_Boltnet(SNESLineSearch);
+
+namespace {
+PetscBool packageInitialized = PETSC_FALSE; // reset by the finalizer registered with PETSc
+}
+
+/*@C
+  BoltnetFinalizePackage - called by PetscFinalize(); resets the package so that a later
+  PetscInitialize() registers the types again.
+@*/
+PetscErrorCode BoltnetFinalizePackage(void)
+{
+  PetscFunctionBeginUser;
+  packageInitialized = PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+/*@C
+  BoltnetInitializePackage - registers the boltnet line search (SNESLINESEARCHBOLTNET). Idempotent;
+  call it after PetscInitialize() and before SNESSetFromOptions(). The plugin calls it from
+  PetscDLLibraryRegister_boltnet_snes().
+@*/
+PetscErrorCode BoltnetInitializePackage(void)
+{
+  PetscFunctionBeginUser;
+  if (packageInitialized) PetscFunctionReturn(0);
+  packageInitialized = PETSC_TRUE;
+  PetscCall(SNESInitializePackage());
+  PetscCall(SNESLineSearchRegister(SNESLINESEARCHBOLTNET, SNESLineSearchCreate_Boltnet));
+  PetscCall(PetscRegisterFinalize(BoltnetFinalizePackage));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetJointParamsSetDefault(BoltnetLaw law, BoltnetJointParams *p)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(p, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL, "Null BoltnetJointParams");
+  const boltnet::Params d; // the library's defaults
+  p->law            = law;
+  p->kn             = d.kn;
+  p->kt             = d.kt;
+  p->kr             = d.kr;
+  p->kc             = d.kc;
+  p->kg             = d.kg;
+  p->gap            = d.gap;
+  p->mu             = d.mu;
+  p->nf             = d.nf;
+  p->pretension     = d.pretension;
+  p->clamp_coupling = d.clamp_coupling;
+  p->offset[0]      = d.offset[0];
+  p->offset[1]      = d.offset[1];
+  PetscFunctionReturn(0);
+}
+
+const char *BoltnetJointStateName(BoltnetJointState s)
+{
+  return boltnet::stateName(static_cast<boltnet::State>(s));
+}

@@ -1,0 +1,87 @@
+/* boltnet: bolted-joint macroelements on a PETSc DMNetwork.
+
+   The public, C-callable API. Another PETSc code builds an assembly (patches, joints, boundary
+   conditions), solves a load path and reads the joint forces and states:
+
+     BoltnetInitializePackage();
+     BoltnetAssemblyCreate(PETSC_COMM_WORLD, &a);
+     BoltnetAssemblyAddRigidPatch(a, 0, x0);              -- every rank passes the same description
+     BoltnetAssemblyAddRigidPatch(a, 1, x1);
+     BoltnetJointParamsSetDefault(BOLTNET_LAW_FRICTION, &p); p.kt = ...;
+     BoltnetAssemblyAddJoint(a, 0, 0, 1, &p, normal, t1);
+     BoltnetAssemblyAddBC(a, 0, -1, BOLTNET_BC_FIXED, 0);  -- dof -1: all six dof of the patch
+     BoltnetAssemblyAddBC(a, 1, 0, BOLTNET_BC_FORCE, 1.0); -- value times the load factor
+     BoltnetAssemblySetFromOptions(a);                     -- -joint_tangent, -load_*, SNES options
+     BoltnetAssemblySetUp(a);                              -- builds and distributes the DMNetwork
+     BoltnetAssemblySolveLoadPath(a, n, factors, steps_per_segment);
+     BoltnetAssemblyGetJointResult(a, 0, force, jump, &state);
+     BoltnetAssemblyDestroy(&a);
+
+   Units are the caller's; the shipped scenes use N, mm, MPa. Dof order per node: ux uy uz rx ry rz. */
+#ifndef BOLTNET_H
+#define BOLTNET_H
+
+#include <petscsnes.h>
+#include <petscdmnetwork.h>
+
+#if defined(__cplusplus)
+extern "C" {
+#endif
+
+typedef struct _p_BoltnetAssembly *BoltnetAssembly;
+
+typedef enum { BOLTNET_LAW_SPRING = 0, BOLTNET_LAW_CONTACT = 1, BOLTNET_LAW_FRICTION = 2 } BoltnetLaw;
+typedef enum {
+  BOLTNET_STATE_LINEAR  = 0,
+  BOLTNET_STATE_OPEN    = 1,
+  BOLTNET_STATE_CONTACT = 2,
+  BOLTNET_STATE_STICK   = 3,
+  BOLTNET_STATE_SLIDE   = 4
+} BoltnetJointState;
+typedef enum { BOLTNET_BC_FIXED = 0, BOLTNET_BC_DISPLACEMENT = 1, BOLTNET_BC_FORCE = 2 } BoltnetBCKind;
+
+/* Macroelement parameters (see docs/joint-laws.md). kt is the in-plane stiffness: the spring's,
+   the contact law's k before contact, the frictional law's stick stiffness ke. kc is k' (contact law)
+   or the bearing stiffness (frictional law). G = mu nf max(0, pretension - clamp_coupling F_n). */
+typedef struct {
+  BoltnetLaw law;
+  PetscReal  kn, kt, kr, kc, kg, gap, mu, nf, pretension, clamp_coupling, offset[2];
+} BoltnetJointParams;
+
+PETSC_EXTERN PetscErrorCode BoltnetInitializePackage(void);
+PETSC_EXTERN PetscErrorCode BoltnetFinalizePackage(void);
+PETSC_EXTERN PetscErrorCode BoltnetJointParamsSetDefault(BoltnetLaw, BoltnetJointParams *);
+PETSC_EXTERN const char    *BoltnetJointStateName(BoltnetJointState);
+
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyCreate(MPI_Comm, BoltnetAssembly *);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblySetOptionsPrefix(BoltnetAssembly, const char[]);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddRigidPatch(BoltnetAssembly, PetscInt id, const PetscReal x[3]);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *, const PetscReal normal[3], const PetscReal t1[3]);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly, PetscInt patch, PetscInt dof, BoltnetBCKind, PetscReal value);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblySetUp(BoltnetAssembly);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetDM(BoltnetAssembly, DM *);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetSNES(BoltnetAssembly, SNES *);
+/* Solve through the piecewise-linear load path factors[0..n-1] (starting from the current state),
+   steps_per_segment equal steps per segment, with automatic cut-back. Returns an error when a step
+   cannot be completed within the cut-back bound. */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly, PetscInt n, const PetscReal factors[], PetscInt steps_per_segment);
+/* Collective: every rank receives the result of joint `id` at the last converged step
+   (force on node B and jump, both in the joint's local frame n, t1, t2, and its state). */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetJointResult(BoltnetAssembly, PetscInt id, PetscReal force[6], PetscReal jump[6], BoltnetJointState *);
+/* Collective: displacement of a patch node (6 dof) at the last converged step. */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetPatchDisplacement(BoltnetAssembly, PetscInt patch, PetscReal u[6]);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetLoadFactor(BoltnetAssembly, PetscReal *);
+
+/* The boltnet line search (-snes_linesearch_type boltnet) and the joint-state SNES monitor. */
+#define SNESLINESEARCHBOLTNET "boltnet"
+/* Joint-state callback a line search can use: the number of joints whose state at x differs from
+   their state at the reference point (summed over ranks). */
+typedef PetscErrorCode (*BoltnetStateChangeFn)(SNES, Vec ref, Vec x, PetscInt *nchanged, void *ctx);
+PETSC_EXTERN PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction(SNESLineSearch, BoltnetStateChangeFn, void *);
+
+#if defined(__cplusplus)
+}
+#endif
+#endif

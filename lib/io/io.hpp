@@ -1,0 +1,44 @@
+// Scenes (PETSc YAML options + CSV tables) and results (joints.csv, summary.json).
+#pragma once
+#include "network/assembly.hpp"
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace boltnet {
+
+struct Scene {
+  std::string           file;       // the -scene file ("" when the scene comes from options only)
+  std::string           dir;        // its directory, against which the scene's relative paths resolve
+  std::string           name;       // -scene_name
+  std::set<std::string> from_file;  // option names (without '-') that the scene file set
+};
+
+// Insert the options of a YAML scene file; options already given (command line) win.
+PetscErrorCode SceneInsertOptionsFile(MPI_Comm comm, const char file[], Scene *scene);
+// Read -scene_* options and the CSV tables they name, and describe the assembly.
+PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembly a);
+// Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
+// a misspelled boltnet option stops the run before it starts.
+PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);
+
+// Results, written by rank 0 under dir.
+struct Output {
+  std::string dir;
+  std::string scene;
+  FILE       *csv = nullptr;
+  // Most loaded joint: largest in-plane force magnitude over all joints and steps.
+  PetscInt  most_joint = -1, most_step = 0;
+  PetscReal most_force = -1, most_load = 0;
+};
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, Output *out);
+PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
+PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
+PetscErrorCode OutputClose(Output *out);
+
+// Read a whole text file on rank 0 and broadcast it; a missing or unreadable file is an error
+// naming `what` and the path.
+PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text);
+
+} // namespace boltnet

@@ -1,0 +1,283 @@
+// Scenes: a PETSc YAML options file (every parameter is an option) plus CSV tables for the
+// structured lists (patches, joints, boundary conditions) that options cannot hold.
+#include "io/io.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace boltnet {
+namespace {
+
+std::string Trim(const std::string &s)
+{
+  const size_t b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+struct Table {
+  std::string                           path;
+  std::vector<std::string>              header;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int>                      lines; // line number of each row, for messages
+};
+
+// CSV with a header line; blank lines and lines starting with '#' are skipped.
+PetscErrorCode ParseTable(MPI_Comm comm, const std::string &path, const std::string &text, const std::vector<std::string> &required, Table *t)
+{
+  PetscFunctionBeginUser;
+  t->path = path;
+  std::istringstream in(text);
+  std::string        line;
+  int                lineno = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    line = Trim(line);
+    if (line.empty() || line[0] == '#') continue;
+    std::vector<std::string> cells;
+    std::stringstream        ls(line);
+    std::string              cell;
+    while (std::getline(ls, cell, ',')) cells.push_back(Trim(cell));
+    if (line.back() == ',') cells.push_back("");
+    if (t->header.empty()) {
+      t->header = cells;
+      continue;
+    }
+    PetscCheck(cells.size() == t->header.size(), comm, PETSC_ERR_USER_INPUT, "%s line %d: %zu values for %zu columns", path.c_str(), lineno, cells.size(), t->header.size());
+    t->rows.push_back(cells);
+    t->lines.push_back(lineno);
+  }
+  PetscCheck(!t->header.empty(), comm, PETSC_ERR_USER_INPUT, "%s: empty table (a header line is needed)", path.c_str());
+  for (const std::string &c : required) {
+    bool found = false;
+    for (const std::string &h : t->header) found = found || h == c;
+    PetscCheck(found, comm, PETSC_ERR_USER_INPUT, "%s: missing column '%s'", path.c_str(), c.c_str());
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode Cell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, std::string *v)
+{
+  PetscFunctionBeginUser;
+  for (size_t k = 0; k < t.header.size(); ++k)
+    if (t.header[k] == col) {
+      *v = t.rows[row][k];
+      PetscFunctionReturn(0);
+    }
+  SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: missing column '%s'", t.path.c_str(), col.c_str());
+}
+
+PetscErrorCode RealCell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, PetscReal *x)
+{
+  std::string v;
+  PetscFunctionBeginUser;
+  PetscCall(Cell(comm, t, row, col, &v));
+  char *end = nullptr;
+  errno     = 0;
+  *x        = std::strtod(v.c_str(), &end);
+  PetscCheck(!v.empty() && end && *end == '\0' && errno == 0 && std::isfinite(*x), comm, PETSC_ERR_USER_INPUT, "%s line %d, column '%s': '%s' is not a number", t.path.c_str(), t.lines[row], col.c_str(), v.c_str());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode IntCell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, PetscInt *i)
+{
+  std::string v;
+  PetscFunctionBeginUser;
+  PetscCall(Cell(comm, t, row, col, &v));
+  char *end = nullptr;
+  errno     = 0;
+  long x    = std::strtol(v.c_str(), &end, 10);
+  PetscCheck(!v.empty() && end && *end == '\0' && errno == 0, comm, PETSC_ERR_USER_INPUT, "%s line %d, column '%s': '%s' is not a whole number", t.path.c_str(), t.lines[row], col.c_str(), v.c_str());
+  *i = (PetscInt)x;
+  PetscFunctionReturn(0);
+}
+
+std::string Resolve(const Scene &s, const std::string &option, const std::string &path)
+{
+  if (path.empty() || path[0] == '/' || !s.from_file.count(option) || s.dir.empty()) return path;
+  return s.dir + "/" + path;
+}
+
+// Options of one joint type, prefix joint_<type>_; -help lists them with defaults and units.
+PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, BoltnetJointParams *p)
+{
+  const char *laws[] = {"spring", "contact", "friction"};
+  PetscInt    law    = 0;
+  PetscBool   set;
+  const std::string prefix = "joint_" + type + "_";
+  const std::string title  = "Joint type '" + type + "' (units: N, mm, N/mm, N mm/rad)";
+  PetscFunctionBeginUser;
+  PetscCall(BoltnetJointParamsSetDefault(BOLTNET_LAW_SPRING, p));
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
+  PetscCall(PetscOptionsEList("-law", "Macroelement law", "", laws, 3, laws[law], &law, &set));
+  p->law = static_cast<BoltnetLaw>(law);
+  PetscCall(PetscOptionsReal("-kn", "Axial stiffness along the bolt (N/mm)", "", p->kn, &p->kn, nullptr));
+  PetscCall(PetscOptionsReal("-kt", "In-plane stiffness (N/mm): spring kt, contact k before contact, friction ke while sticking", "", p->kt, &p->kt, nullptr));
+  PetscCall(PetscOptionsReal("-kr", "Rotational stiffness (N mm/rad), high for a rigid rotation", "", p->kr, &p->kr, nullptr));
+  PetscCall(PetscOptionsReal("-kc", "Stiffness after the clearance closes (N/mm): contact k', friction bearing kc", "", p->kc, &p->kc, nullptr));
+  PetscCall(PetscOptionsReal("-kg", "Friction: regularisation stiffness while sliding (N/mm); 0 is pure Coulomb", "", p->kg, &p->kg, nullptr));
+  PetscCall(PetscOptionsReal("-gap", "Clearance j between bolt and hole, radius in the joint plane (mm)", "", p->gap, &p->gap, nullptr));
+  PetscCall(PetscOptionsReal("-mu", "Friction coefficient", "", p->mu, &p->mu, nullptr));
+  PetscCall(PetscOptionsReal("-nf", "Friction interfaces: 1 single lap, 2 double lap", "", p->nf, &p->nf, nullptr));
+  PetscCall(PetscOptionsReal("-pretension", "Bolt clamp force Pc (N); G = mu nf Pc", "", p->pretension, &p->pretension, nullptr));
+  PetscCall(PetscOptionsReal("-clamp_coupling", "phi in G = mu nf max(0, Pc - phi F_n); 0 is the paper's constant G", "", p->clamp_coupling, &p->clamp_coupling, nullptr));
+  PetscCall(PetscOptionsReal("-offset_t1", "Initial bolt offset in the hole along t1 (mm)", "", p->offset[0], &p->offset[0], nullptr));
+  PetscCall(PetscOptionsReal("-offset_t2", "Initial bolt offset in the hole along t2 (mm)", "", p->offset[1], &p->offset[1], nullptr));
+  PetscOptionsEnd();
+  Params q;
+  q.law = static_cast<Law>(p->law);
+  q.kn = p->kn, q.kt = p->kt, q.kr = p->kr, q.kc = p->kc, q.kg = p->kg, q.gap = p->gap, q.mu = p->mu, q.nf = p->nf;
+  q.pretension = p->pretension, q.clamp_coupling = p->clamp_coupling, q.offset[0] = p->offset[0], q.offset[1] = p->offset[1];
+  const std::string bad = validate(q);
+  PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Joint type '%s' (options -%s*): %s", type.c_str(), prefix.c_str(), bad.c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text)
+{
+  PetscMPIInt rank;
+  long        len = -1;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    std::ifstream in(path, std::ios::binary);
+    if (in) {
+      std::ostringstream ss;
+      ss << in.rdbuf();
+      *text = ss.str();
+      len   = in.bad() ? -1 : (long)text->size();
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG, 0, comm));
+  PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot read the %s file '%s'", what, path.c_str());
+  text->resize(len);
+  PetscCallMPI(MPI_Bcast(text->data(), (PetscMPIInt)len, MPI_CHAR, 0, comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SceneInsertOptionsFile(MPI_Comm comm, const char file[], Scene *scene)
+{
+  PetscOptions opts;
+  PetscInt     n;
+  char       **names, **values;
+  std::string  text;
+  PetscFunctionBeginUser;
+  PetscCall(ReadFileCollective(comm, file, "scene", &text)); // a clear message for a missing file
+  scene->file            = file;
+  const size_t slash     = scene->file.find_last_of('/');
+  scene->dir             = slash == std::string::npos ? "." : scene->file.substr(0, slash);
+  std::string base       = slash == std::string::npos ? scene->file : scene->file.substr(slash + 1);
+  scene->name            = base.substr(0, base.find('.'));
+  PetscCall(PetscOptionsCreate(&opts));
+  PetscCall(PetscOptionsInsertFileYAML(comm, opts, file, PETSC_TRUE));
+  PetscCall(PetscOptionsLeftGet(opts, &n, &names, &values)); // all of them: none was used yet
+  for (PetscInt i = 0; i < n; ++i) {
+    const std::string name = std::string("-") + names[i];
+    PetscBool         given;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &given));
+    if (given) continue; // the command line overrides the scene
+    PetscCall(PetscOptionsSetValue(nullptr, name.c_str(), values[i]));
+    scene->from_file.insert(names[i]);
+  }
+  PetscCall(PetscOptionsLeftRestore(opts, &n, &names, &values));
+  PetscCall(PetscOptionsDestroy(&opts));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembly a)
+{
+  char        name[PETSC_MAX_PATH_LEN], fp[PETSC_MAX_PATH_LEN] = "", fj[PETSC_MAX_PATH_LEN] = "", fb[PETSC_MAX_PATH_LEN] = "";
+  std::string text;
+  PetscFunctionBeginUser;
+  PetscCall(PetscStrncpy(name, scene->name.c_str(), sizeof(name)));
+  PetscOptionsBegin(comm, nullptr, "boltnet scene", "boltnet");
+  PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
+  PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z (kind: rigid)", "", fp, fp, sizeof(fp), nullptr));
+  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z (n bolt axis, t1 first in-plane direction)", "", fj, fj, sizeof(fj), nullptr));
+  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N)", "", fb, fb, sizeof(fb), nullptr));
+  PetscOptionsEnd();
+  scene->name = name;
+  PetscCheck(fp[0] && fj[0] && fb[0], comm, PETSC_ERR_USER_INPUT, "The scene must name its tables: -scene_patches, -scene_joints and -scene_bcs (missing: %s%s%s)", fp[0] ? "" : "-scene_patches ", fj[0] ? "" : "-scene_joints ", fb[0] ? "" : "-scene_bcs");
+
+  Table patches, joints, bcs;
+  std::string path = Resolve(*scene, "scene_patches", fp);
+  PetscCall(ReadFileCollective(comm, path, "patch table (-scene_patches)", &text));
+  PetscCall(ParseTable(comm, path, text, {"id", "kind", "x", "y", "z"}, &patches));
+  path = Resolve(*scene, "scene_joints", fj);
+  PetscCall(ReadFileCollective(comm, path, "fastener table (-scene_joints)", &text));
+  PetscCall(ParseTable(comm, path, text, {"id", "patch_a", "patch_b", "type", "nx", "ny", "nz", "t1x", "t1y", "t1z"}, &joints));
+  path = Resolve(*scene, "scene_bcs", fb);
+  PetscCall(ReadFileCollective(comm, path, "boundary condition table (-scene_bcs)", &text));
+  PetscCall(ParseTable(comm, path, text, {"patch", "dof", "kind", "value"}, &bcs));
+
+  for (size_t r = 0; r < patches.rows.size(); ++r) {
+    PetscInt    id;
+    PetscReal   x[3];
+    std::string kind;
+    PetscCall(IntCell(comm, patches, r, "id", &id));
+    PetscCall(Cell(comm, patches, r, "kind", &kind));
+    PetscCheck(kind == "rigid", comm, PETSC_ERR_USER_INPUT, "%s line %d: patch kind '%s' is not known (rigid)", patches.path.c_str(), patches.lines[r], kind.c_str());
+    PetscCall(RealCell(comm, patches, r, "x", &x[0]));
+    PetscCall(RealCell(comm, patches, r, "y", &x[1]));
+    PetscCall(RealCell(comm, patches, r, "z", &x[2]));
+    PetscCall(BoltnetAssemblyAddRigidPatch(a, id, x));
+  }
+  std::map<std::string, BoltnetJointParams> types;
+  for (size_t r = 0; r < joints.rows.size(); ++r) {
+    std::string type;
+    PetscCall(Cell(comm, joints, r, "type", &type));
+    PetscCheck(!type.empty() && type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") == std::string::npos, comm, PETSC_ERR_USER_INPUT, "%s line %d: joint type '%s' must be lower-case letters and digits (it names the options -joint_<type>_*)", joints.path.c_str(), joints.lines[r], type.c_str());
+    if (!types.count(type)) PetscCall(JointTypeFromOptions(comm, type, &types[type]));
+    PetscInt  id, pa, pb;
+    PetscReal n[3], t[3];
+    PetscCall(IntCell(comm, joints, r, "id", &id));
+    PetscCall(IntCell(comm, joints, r, "patch_a", &pa));
+    PetscCall(IntCell(comm, joints, r, "patch_b", &pb));
+    const char *nc[] = {"nx", "ny", "nz"}, *tc[] = {"t1x", "t1y", "t1z"};
+    for (int k = 0; k < 3; ++k) {
+      PetscCall(RealCell(comm, joints, r, nc[k], &n[k]));
+      PetscCall(RealCell(comm, joints, r, tc[k], &t[k]));
+    }
+    PetscCall(BoltnetAssemblyAddJoint(a, id, pa, pb, &types[type], n, t));
+  }
+  const std::map<std::string, PetscInt> dofs = {{"ux", 0}, {"uy", 1}, {"uz", 2}, {"rx", 3}, {"ry", 4}, {"rz", 5}, {"all", -1}};
+  const std::map<std::string, BoltnetBCKind> kinds = {{"fixed", BOLTNET_BC_FIXED}, {"displacement", BOLTNET_BC_DISPLACEMENT}, {"force", BOLTNET_BC_FORCE}};
+  for (size_t r = 0; r < bcs.rows.size(); ++r) {
+    PetscInt    patch;
+    PetscReal   value;
+    std::string dof, kind;
+    PetscCall(IntCell(comm, bcs, r, "patch", &patch));
+    PetscCall(Cell(comm, bcs, r, "dof", &dof));
+    PetscCall(Cell(comm, bcs, r, "kind", &kind));
+    PetscCall(RealCell(comm, bcs, r, "value", &value));
+    PetscCheck(dofs.count(dof), comm, PETSC_ERR_USER_INPUT, "%s line %d: dof '%s' is not one of ux uy uz rx ry rz all", bcs.path.c_str(), bcs.lines[r], dof.c_str());
+    PetscCheck(kinds.count(kind), comm, PETSC_ERR_USER_INPUT, "%s line %d: kind '%s' is not one of fixed displacement force", bcs.path.c_str(), bcs.lines[r], kind.c_str());
+    PetscCheck(!(kind == "force" && dof == "all"), comm, PETSC_ERR_USER_INPUT, "%s line %d: a force needs one dof, not 'all'", bcs.path.c_str(), bcs.lines[r]);
+    PetscCall(BoltnetAssemblyAddBC(a, patch, dofs.at(dof), kinds.at(kind), value));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm)
+{
+  PetscInt    n;
+  char      **names, **values;
+  std::string bad;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
+  for (PetscInt i = 0; i < n; ++i) {
+    const std::string s = names[i];
+    if (s.rfind("scene_", 0) == 0 || s.rfind("joint_", 0) == 0 || s.rfind("load_", 0) == 0 || s == "output_dir") bad += " -" + s;
+  }
+  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+  PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Unknown boltnet option(s):%s (misspelled, or a joint type that no joint of the fastener table uses?); -help lists the options", bad.c_str());
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet

@@ -1,0 +1,72 @@
+// Joint laws of the bolted-joint macroelement (paper sect. 2, made precise in docs/joint-laws.md).
+//
+// Every law is a pure function
+//   (parameters, committed history, local jump) -> (local force, local tangent, trial history)
+// Nothing here touches PETSc or global state: residual and Jacobian evaluations call evaluate(),
+// and only the end of a converged load step copies the trial history into the committed one.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace boltnet {
+
+// Which constitutive law an edge carries. Values are stored in plain structs copied by DMNetwork.
+enum class Law : int { Spring = 0, Contact = 1, Friction = 2 };
+
+// State of a joint after an evaluation. Written to joints.csv by name (stateName()).
+enum class State : int { Linear = 0, Open = 1, Contact = 2, Stick = 3, Slide = 4 };
+
+// Which tangent a law returns: the paper's state-switched one or the consistent (algorithmic) one.
+enum class Tangent : int { Paper = 0, Consistent = 1 };
+
+// Parameters of one joint type; a plain struct (no pointers): DMNetwork copies it as raw bytes.
+// Local frame: component 0 is the bolt axis n, components 1, 2 the joint plane (t1, t2), 3..5 rotations.
+// Units: force N, length mm, stiffness N/mm, rotational stiffness N mm/rad.
+struct Params {
+  Law    law = Law::Spring;
+  double kn  = 0;  // axial stiffness along n
+  double kt  = 0;  // in-plane stiffness: spring kt; contact k (before contact); friction ke (stick)
+  double kr  = 0;  // rotational stiffness (high: rigid rotation)
+  double kc  = 0;  // contact: k' (after contact); friction: bearing stiffness after the clearance closes
+  double kg  = 0;  // friction: regularisation stiffness while sliding (kg = 0 is pure Coulomb)
+  double gap = 0;  // j: radius of the clearance circle in the joint plane
+  double mu  = 0;  // friction coefficient
+  double nf  = 1;  // number of friction interfaces (1 single lap, 2 double lap)
+  double pretension = 0;     // Pc, bolt clamp force
+  double clamp_coupling = 0; // phi: G = mu nf max(0, Pc - phi F_n); 0 reproduces the paper (G constant)
+  double offset[2] = {0, 0}; // initial position of the bolt in the hole (t1, t2): centre of the clearance circle
+};
+
+// Committed (or trial) history of one joint: the slip of the friction slider in the joint plane.
+struct History {
+  double slip[2] = {0, 0};
+  int    state   = 0; // State as int
+};
+
+using Vec6 = std::array<double, 6>;
+using Mat6 = std::array<double, 36>; // row major
+
+struct Response {
+  Vec6    force{};   // local force on node B (node A gets the opposite)
+  Mat6    tangent{}; // d force / d jump, local frame
+  History trial;     // history if this point were accepted
+  State   state = State::Linear;
+  bool    bearing = false; // friction: the slip has closed the clearance (bolt bears on the hole)
+};
+
+// Friction threshold G = mu nf max(0, Pc - phi F_n) for the given normal force.
+double frictionThreshold(const Params &p, double normal_force);
+
+// Evaluate the law at the local jump du = (du_n, du_t1, du_t2, dth_n, dth_t1, dth_t2).
+Response evaluate(const Params &p, const History &committed, const Vec6 &jump, Tangent tangent);
+
+// Check the parameters; returns an empty string when valid, else a message naming the parameter.
+std::string validate(const Params &p);
+
+const char *stateName(State s);
+const char *lawName(Law l);
+// Parse "spring" | "contact" | "friction"; returns false when unknown.
+bool parseLaw(const std::string &name, Law *law);
+
+} // namespace boltnet

@@ -1,0 +1,451 @@
+// DMNetwork assembly: patches are vertices, joints are edges (docs/architecture.md).
+#include "network/assembly.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace boltnet {
+namespace {
+
+constexpr PetscInt kNodeDof = 6;
+
+struct EdgeView {
+  const JointComp *joint;
+  PetscInt         va, vb; // vertex points
+};
+
+PetscErrorCode GetEdge(DM dm, PetscInt e, EdgeView *ev)
+{
+  PetscInt        key, nvar;
+  void           *data;
+  const PetscInt *cone;
+
+  PetscFunctionBeginUser;
+  PetscCall(DMNetworkGetComponent(dm, e, 0, &key, &data, &nvar));
+  PetscCall(DMNetworkGetConnectedVertices(dm, e, &cone));
+  ev->joint = static_cast<const JointComp *>(data);
+  ev->va    = cone[0];
+  ev->vb    = cone[1];
+  PetscFunctionReturn(0);
+}
+
+const PatchComp *GetPatch(DM dm, PetscInt v)
+{
+  PetscInt key, nvar;
+  void    *data = nullptr;
+  if (DMNetworkGetComponent(dm, v, 0, &key, &data, &nvar)) return nullptr;
+  return static_cast<const PatchComp *>(data);
+}
+
+// Jump in the local frame: du = Q (u_b - u_a), Q = diag(R, R).
+Vec6 LocalJump(const PetscReal R[9], const PetscScalar *ua, const PetscScalar *ub)
+{
+  Vec6 du{};
+  for (int blk = 0; blk < 2; ++blk)
+    for (int i = 0; i < 3; ++i) {
+      double s = 0;
+      for (int k = 0; k < 3; ++k) s += R[3 * i + k] * (ub[3 * blk + k] - ua[3 * blk + k]);
+      du[3 * blk + i] = s;
+    }
+  return du;
+}
+
+// Global force on node b: Q^T f.
+Vec6 GlobalForce(const PetscReal R[9], const Vec6 &f)
+{
+  Vec6 g{};
+  for (int blk = 0; blk < 2; ++blk)
+    for (int k = 0; k < 3; ++k) {
+      double s = 0;
+      for (int i = 0; i < 3; ++i) s += R[3 * i + k] * f[3 * blk + i];
+      g[3 * blk + k] = s;
+    }
+  return g;
+}
+
+// Global tangent Q^T K Q.
+Mat6 GlobalTangent(const PetscReal R[9], const Mat6 &K)
+{
+  double Q[36] = {0};
+  for (int blk = 0; blk < 2; ++blk)
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) Q[6 * (3 * blk + i) + 3 * blk + k] = R[3 * i + k];
+  Mat6 KQ{}, G{};
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      double s = 0;
+      for (int k = 0; k < 6; ++k) s += K[6 * i + k] * Q[6 * k + j];
+      KQ[6 * i + j] = s;
+    }
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      double s = 0;
+      for (int k = 0; k < 6; ++k) s += Q[6 * k + i] * KQ[6 * k + j];
+      G[6 * i + j] = s;
+    }
+  return G;
+}
+
+// A (rows x cols) SeqAIJ pattern with a dense 6x6 block at node (ni, nj): what one joint couples.
+PetscErrorCode NodeBlockPattern(PetscInt rows, PetscInt cols, PetscInt ni, PetscInt nj, Mat *B)
+{
+  PetscFunctionBeginUser;
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, rows, cols, kNodeDof, nullptr, B));
+  for (PetscInt i = 0; i < kNodeDof; ++i)
+    for (PetscInt j = 0; j < kNodeDof; ++j) PetscCall(MatSetValue(*B, kNodeDof * ni + i, kNodeDof * nj + j, 1.0, INSERT_VALUES));
+  PetscCall(MatAssemblyBegin(*B, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(*B, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(0);
+}
+
+// Sparse Jacobian blocks for every vertex, ghosts included: J[0] the patch itself, J[1+2i] the
+// i-th supporting edge (joints carry no dof: none), J[2+2i] the vertex across that edge.
+PetscErrorCode SetVertexPatterns(BoltnetAssembly a, std::vector<Mat> &owned)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
+    const PatchComp *pv = GetPatch(a->dm, v);
+    PetscCheck(pv, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vertex %" PetscInt_FMT " has no patch", v);
+    PetscInt        nedges;
+    const PetscInt *edges;
+    PetscCall(DMNetworkGetSupportingEdges(a->dm, v, &nedges, &edges));
+    std::vector<Mat> J(1 + 2 * nedges, nullptr);
+    const PetscInt   nv = kNodeDof * pv->nnodes;
+    // Self block: the patch's own stiffness (none for a rigid patch) plus the joints' diagonal blocks.
+    Mat self;
+    PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, nv, nv, kNodeDof, nullptr, &self));
+    for (PetscInt i = 0; i < nedges; ++i) {
+      EdgeView ev;
+      PetscCall(GetEdge(a->dm, edges[i], &ev));
+      const PetscBool  isA   = (ev.va == v) ? PETSC_TRUE : PETSC_FALSE;
+      const PetscInt   mine  = isA ? ev.joint->node_a : ev.joint->node_b;
+      const PetscInt   other = isA ? ev.joint->node_b : ev.joint->node_a;
+      const PatchComp *po    = GetPatch(a->dm, isA ? ev.vb : ev.va);
+      for (PetscInt r = 0; r < kNodeDof; ++r)
+        for (PetscInt c = 0; c < kNodeDof; ++c) PetscCall(MatSetValue(self, kNodeDof * mine + r, kNodeDof * mine + c, 1.0, INSERT_VALUES));
+      PetscCall(NodeBlockPattern(nv, kNodeDof * po->nnodes, mine, other, &J[2 + 2 * i]));
+      owned.push_back(J[2 + 2 * i]);
+    }
+    PetscCall(MatAssemblyBegin(self, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(self, MAT_FINAL_ASSEMBLY));
+    J[0] = self;
+    owned.push_back(self);
+    PetscCall(DMNetworkVertexSetMatrix(a->dm, v, J.data()));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
+{
+  std::map<PetscInt, PetscInt> byId;
+  PetscFunctionBeginUser;
+  a->dirichlet_rows.clear();
+  a->dirichlet_values.clear();
+  a->force_rows.clear();
+  a->force_values.clear();
+  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
+    PetscBool ghost;
+    PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
+    if (!ghost) byId[GetPatch(a->dm, v)->id] = v;
+  }
+  std::map<PetscInt, PetscReal> dir, frc; // global row -> value (later entries override / add)
+  for (const BCDesc &bc : a->bcs) {
+    auto it = byId.find(bc.patch);
+    if (it == byId.end()) continue; // not owned here
+    PetscInt goff;
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, it->second, ALL_COMPONENTS, &goff));
+    for (PetscInt d = 0; d < kNodeDof; ++d) {
+      if (bc.dof >= 0 && d != bc.dof) continue;
+      if (bc.kind == BOLTNET_BC_FORCE) frc[goff + d] += bc.value;
+      else dir[goff + d] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
+    }
+  }
+  for (auto &kv : dir) {
+    a->dirichlet_rows.push_back(kv.first);
+    a->dirichlet_values.push_back(kv.second);
+  }
+  for (auto &kv : frc) {
+    if (dir.count(kv.first)) continue; // a prescribed dof takes no applied force
+    a->force_rows.push_back(kv.first);
+    a->force_values.push_back(kv.second);
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
+{
+  PetscInt keyPatch, keyJoint;
+  PetscFunctionBeginUser;
+  const PetscInt npatch = (PetscInt)a->patches.size(), njoint = (PetscInt)a->joints.size();
+  PetscCheck(npatch > 0 && njoint > 0, a->comm, PETSC_ERR_USER_INPUT, "The assembly needs at least one patch and one joint (it has %" PetscInt_FMT " patches, %" PetscInt_FMT " joints)", npatch, njoint);
+  // Patch ids -> positions; every patch must be reached by a joint (DMNetwork vertices come from edges).
+  std::map<PetscInt, PetscInt> index;
+  for (PetscInt i = 0; i < npatch; ++i) {
+    PetscCheck(!index.count(a->patches[i].id), a->comm, PETSC_ERR_USER_INPUT, "Patch id %" PetscInt_FMT " is given twice", a->patches[i].id);
+    index[a->patches[i].id] = i;
+  }
+  std::vector<PetscInt> degree(npatch, 0), edgelist;
+  {
+    std::map<PetscInt, PetscInt> seen;
+    for (const JointComp &j : a->joints) {
+      PetscCheck(!seen.count(j.id), a->comm, PETSC_ERR_USER_INPUT, "Joint id %" PetscInt_FMT " is given twice", j.id);
+      seen[j.id] = 1;
+    }
+  }
+  for (JointComp &j : a->joints) {
+    auto ia = index.find(j.patch_a), ib = index.find(j.patch_b);
+    PetscCheck(ia != index.end(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " names patch %" PetscInt_FMT " which does not exist", j.id, j.patch_a);
+    PetscCheck(ib != index.end(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " names patch %" PetscInt_FMT " which does not exist", j.id, j.patch_b);
+    PetscCheck(ia->second != ib->second, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " joins patch %" PetscInt_FMT " to itself", j.id, j.patch_a);
+    edgelist.push_back(ia->second);
+    edgelist.push_back(ib->second);
+    degree[ia->second]++;
+    degree[ib->second]++;
+  }
+  for (PetscInt i = 0; i < npatch; ++i)
+    PetscCheck(degree[i] > 0, a->comm, PETSC_ERR_USER_INPUT, "Patch %" PetscInt_FMT " is not joined to anything: every patch needs at least one joint", a->patches[i].id);
+  for (const BCDesc &bc : a->bcs)
+    PetscCheck(index.count(bc.patch), a->comm, PETSC_ERR_USER_INPUT, "A boundary condition names patch %" PetscInt_FMT " which does not exist", bc.patch);
+
+  PetscCall(DMNetworkCreate(a->comm, &a->dm));
+  PetscCall(DMNetworkSetNumSubNetworks(a->dm, PETSC_DECIDE, 1));
+  PetscCall(DMNetworkRegisterComponent(a->dm, "patch", sizeof(PatchComp), &keyPatch));
+  PetscCall(DMNetworkRegisterComponent(a->dm, "joint", sizeof(JointComp), &keyJoint));
+  // Rank 0 lays out the whole network; DMNetworkDistribute spreads it.
+  const PetscInt ne = a->rank == 0 ? njoint : 0;
+  PetscCall(DMNetworkAddSubnetwork(a->dm, "assembly", ne, a->rank == 0 ? edgelist.data() : nullptr, nullptr));
+  PetscCall(DMNetworkLayoutSetUp(a->dm));
+  if (a->rank == 0) {
+    PetscInt        nv, nee;
+    const PetscInt *vtx, *edges;
+    PetscCall(DMNetworkGetSubnetwork(a->dm, 0, &nv, &nee, &vtx, &edges));
+    for (PetscInt i = 0; i < nee; ++i) {
+      JointComp &j = a->joints[i];
+      j.index      = i;
+      PetscCall(DMNetworkAddComponent(a->dm, edges[i], keyJoint, &j, 0));
+    }
+    for (PetscInt i = 0; i < nv; ++i) {
+      PetscInt gidx;
+      PetscCall(DMNetworkGetGlobalVertexIndex(a->dm, vtx[i], &gidx));
+      PatchComp &p = a->patches[gidx];
+      p.index      = gidx;
+      PetscCall(DMNetworkAddComponent(a->dm, vtx[i], keyPatch, &p, kNodeDof * p.nnodes));
+    }
+  }
+  PetscCall(DMNetworkFinalizeComponents(a->dm));
+  PetscCall(DMNetworkDistribute(&a->dm, 0));
+  PetscCall(DMNetworkGetVertexRange(a->dm, &a->vStart, &a->vEnd));
+  PetscCall(DMNetworkGetEdgeRange(a->dm, &a->eStart, &a->eEnd));
+  a->committed.assign(a->eEnd - a->eStart, History{});
+
+  // Sparse user Jacobian blocks (ghost vertices included), then the matrix.
+  std::vector<Mat> patterns;
+  PetscCall(DMNetworkHasJacobian(a->dm, PETSC_FALSE, PETSC_TRUE));
+  PetscCall(SetVertexPatterns(a, patterns));
+  PetscCall(DMCreateMatrix(a->dm, &a->J));
+  for (Mat &m : patterns) PetscCall(MatDestroy(&m));
+  PetscCall(MatSetOption(a->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(MatSetOption(a->J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+
+  PetscCall(DMCreateGlobalVector(a->dm, &a->X));
+  PetscCall(VecGetSize(a->X, &a->ndof_global));
+  PetscCall(VecSet(a->X, 0.0));
+  PetscCall(SetUpBoundaryRows(a));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps)
+{
+  Vec                Xl;
+  const PetscScalar *x;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(a->dm, &Xl));
+  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
+  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
+  PetscCall(VecGetArrayRead(Xl, &x));
+  out.resize(a->eEnd - a->eStart);
+  if (jumps) jumps->resize(a->eEnd - a->eStart);
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    EdgeView ev;
+    PetscInt oa, ob;
+    PetscCall(GetEdge(a->dm, e, &ev));
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &oa));
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &ob));
+    const Vec6 du  = LocalJump(ev.joint->R, x + oa + kNodeDof * ev.joint->node_a, x + ob + kNodeDof * ev.joint->node_b);
+    out[e - a->eStart] = evaluate(ev.joint->params, a->committed[e - a->eStart], du, a->tangent);
+    if (jumps) (*jumps)[e - a->eStart] = du;
+  }
+  PetscCall(VecRestoreArrayRead(Xl, &x));
+  PetscCall(DMRestoreLocalVector(a->dm, &Xl));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx)
+{
+  BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
+  Vec                   Xl, Fl;
+  const PetscScalar    *x;
+  PetscScalar          *f;
+  std::vector<Response> resp;
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  PetscCall(DMGetLocalVector(a->dm, &Fl));
+  PetscCall(VecSet(Fl, 0.0));
+  PetscCall(VecGetArray(Fl, &f));
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    EdgeView ev;
+    PetscInt oa, ob;
+    PetscCall(GetEdge(a->dm, e, &ev));
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &oa));
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &ob));
+    const Vec6 g = GlobalForce(ev.joint->R, resp[e - a->eStart].force);
+    for (int i = 0; i < kNodeDof; ++i) {
+      f[ob + kNodeDof * ev.joint->node_b + i] += g[i];
+      f[oa + kNodeDof * ev.joint->node_a + i] -= g[i];
+    }
+  }
+  PetscCall(VecRestoreArray(Fl, &f));
+  PetscCall(VecSet(F, 0.0));
+  PetscCall(DMLocalToGlobalBegin(a->dm, Fl, ADD_VALUES, F));
+  PetscCall(DMLocalToGlobalEnd(a->dm, Fl, ADD_VALUES, F));
+  PetscCall(DMRestoreLocalVector(a->dm, &Fl));
+
+  // Applied forces, then the constrained rows: r = u - lambda * value.
+  PetscInt rstart;
+  PetscCall(VecGetOwnershipRange(F, &rstart, nullptr));
+  PetscCall(VecGetArray(F, &f));
+  PetscCall(VecGetArrayRead(X, &x));
+  for (size_t i = 0; i < a->force_rows.size(); ++i) f[a->force_rows[i] - rstart] -= a->lambda_target * a->force_values[i];
+  for (size_t i = 0; i < a->dirichlet_rows.size(); ++i) {
+    const PetscInt r = a->dirichlet_rows[i] - rstart;
+    f[r]             = x[r] - a->lambda_target * a->dirichlet_values[i];
+  }
+  PetscCall(VecRestoreArrayRead(X, &x));
+  PetscCall(VecRestoreArray(F, &f));
+  (void)Xl;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+{
+  BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
+  std::vector<Response> resp;
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  PetscCall(MatZeroEntries(P));
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    EdgeView ev;
+    PetscInt ga, gb;
+    PetscCall(GetEdge(a->dm, e, &ev));
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &ga));
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &gb));
+    const Mat6  K = GlobalTangent(ev.joint->R, resp[e - a->eStart].tangent);
+    PetscInt    rows[12];
+    PetscScalar vals[144];
+    for (int i = 0; i < kNodeDof; ++i) {
+      rows[i]            = ga + kNodeDof * ev.joint->node_a + i;
+      rows[kNodeDof + i] = gb + kNodeDof * ev.joint->node_b + i;
+    }
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) {
+        const double sign = ((i < 6) == (j < 6)) ? 1.0 : -1.0;
+        vals[12 * i + j]  = sign * K[6 * (i % 6) + (j % 6)];
+      }
+    PetscCall(MatSetValues(P, 12, rows, 12, rows, vals, ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatZeroRows(P, (PetscInt)a->dirichlet_rows.size(), a->dirichlet_rows.data(), 1.0, nullptr, nullptr));
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx)
+{
+  BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
+  std::vector<Response> r0, r1;
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, ref, r0));
+  PetscCall(AssemblyEvaluateJoints(a, X, r1));
+  PetscInt n = 0;
+  for (size_t i = 0; i < r0.size(); ++i) n += (r0[i].state != r1[i].state) ? 1 : 0;
+  PetscCall(MPIU_Allreduce(&n, nchanged, 1, MPIU_INT, MPI_SUM, a->comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyStateCounts(BoltnetAssembly a, Vec X, PetscInt counts[5])
+{
+  std::vector<Response> r;
+  PetscInt              loc[5] = {0, 0, 0, 0, 0};
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, r));
+  for (const Response &x : r) loc[static_cast<int>(x.state)]++;
+  PetscCall(MPIU_Allreduce(loc, counts, 5, MPIU_INT, MPI_SUM, a->comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, a->accepted, &a->accepted_jump));
+  for (size_t i = 0; i < a->accepted.size(); ++i) a->committed[i] = a->accepted[i].trial;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord> &records)
+{
+  std::vector<JointRecord> mine;
+  PetscFunctionBeginUser;
+  if (a->accepted.size() != (size_t)(a->eEnd - a->eStart)) PetscCall(AssemblyEvaluateJoints(a, a->X, a->accepted, &a->accepted_jump)); // before the first step
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    EdgeView ev;
+    PetscCall(GetEdge(a->dm, e, &ev));
+    const Response &re = a->accepted[e - a->eStart];
+    const Vec6     &du = a->accepted_jump[e - a->eStart];
+    JointRecord     rec{};
+    rec.joint   = ev.joint->id;
+    rec.state   = static_cast<PetscInt>(re.state);
+    rec.bearing = re.bearing ? 1 : 0;
+    for (int i = 0; i < 6; ++i) {
+      rec.jump[i]  = du[i];
+      rec.force[i] = re.force[i];
+    }
+    rec.slip[0] = re.trial.slip[0];
+    rec.slip[1] = re.trial.slip[1];
+    mine.push_back(rec);
+  }
+
+  // Gather as raw bytes: JointRecord is plain data.
+  const PetscMPIInt nbytes = (PetscMPIInt)(mine.size() * sizeof(JointRecord));
+  std::vector<PetscMPIInt> counts(a->size), displs(a->size);
+  PetscCallMPI(MPI_Gather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, a->comm));
+  PetscMPIInt total = 0;
+  if (a->rank == 0)
+    for (PetscMPIInt i = 0; i < a->size; ++i) {
+      displs[i] = total;
+      total += counts[i];
+    }
+  records.assign(a->rank == 0 ? total / sizeof(JointRecord) : 0, JointRecord{});
+  PetscCallMPI(MPI_Gatherv(mine.data(), nbytes, MPI_BYTE, records.data(), counts.data(), displs.data(), MPI_BYTE, 0, a->comm));
+  std::sort(records.begin(), records.end(), [](const JointRecord &l, const JointRecord &r) { return l.joint < r.joint; });
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda)
+{
+  PetscScalar *x;
+  PetscInt     rstart;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetOwnershipRange(X, &rstart, nullptr));
+  PetscCall(VecGetArray(X, &x));
+  for (size_t i = 0; i < a->dirichlet_rows.size(); ++i) x[a->dirichlet_rows[i] - rstart] = lambda * a->dirichlet_values[i];
+  PetscCall(VecRestoreArray(X, &x));
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet

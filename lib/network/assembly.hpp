@@ -1,0 +1,143 @@
+// The assembly: a DMNetwork whose vertices are patches and whose edges are joints.
+// Internal C++ view of the opaque BoltnetAssembly of boltnet.h.
+#pragma once
+
+#include "boltnet.h"
+#include "core/compat.h"
+#include "joint/law.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace boltnet {
+
+// Patch kinds. A rigid patch is one 6-dof node; shell patches (issue 3) add nodes and a stiffness.
+enum class PatchKind : PetscInt { Rigid = 0 };
+
+// Vertex component: plain data, copied as raw bytes by DMNetworkDistribute.
+struct PatchComp {
+  PetscInt  id;     // user id
+  PetscInt  index;  // position in the description
+  PetscInt  kind;   // PatchKind
+  PetscInt  nnodes; // nodes carried by the vertex (6 dof each)
+  PetscReal x[3];   // reference position of node 0
+};
+
+// Edge component: plain data. R holds the local frame rows (n, t1, t2).
+struct JointComp {
+  PetscInt  id;     // user id
+  PetscInt  index;  // position in the description (0..njoints-1)
+  PetscInt  patch_a, patch_b; // user ids of the two patches
+  PetscInt  node_a; // attachment node inside patch a
+  PetscInt  node_b; // attachment node inside patch b
+  PetscReal R[9];
+  Params    params;
+};
+
+struct BCDesc {
+  PetscInt      patch; // user id
+  PetscInt      dof;   // 0..5, or -1 for all six
+  BoltnetBCKind kind;
+  PetscReal     value; // per unit load factor (fixed: ignored)
+};
+
+// One row of results for one joint at one converged step (gathered to rank 0 for output).
+struct JointRecord {
+  PetscInt  joint; // user id
+  PetscInt  state; // State
+  PetscInt  bearing;
+  PetscReal jump[6];
+  PetscReal force[6];
+  PetscReal slip[2];
+};
+
+struct StepInfo {
+  PetscInt  step;        // converged step number (1-based)
+  PetscReal load;        // load factor
+  PetscInt  newton_its;  // Newton iterations of the accepted solve
+  PetscInt  cutbacks;    // cut-backs needed before this step converged
+};
+
+} // namespace boltnet
+
+struct _p_BoltnetAssembly {
+  MPI_Comm    comm   = MPI_COMM_NULL;
+  PetscMPIInt rank   = 0;
+  PetscMPIInt size   = 1;
+  std::string prefix;
+
+  // Description (replicated on every rank, used by rank 0 to build the network).
+  std::vector<boltnet::PatchComp> patches;
+  std::vector<boltnet::JointComp> joints;
+  std::vector<boltnet::BCDesc>    bcs;
+
+  // Options.
+  boltnet::Tangent tangent        = boltnet::Tangent::Paper;
+  PetscInt         max_cuts       = 8;
+  PetscBool        monitor_states = PETSC_FALSE;
+  PetscBool        setfromoptions_called = PETSC_FALSE;
+
+  // Network and solver.
+  DM       dm   = nullptr;
+  SNES     snes = nullptr;
+  Mat      J    = nullptr;
+  Vec      X    = nullptr; // converged solution
+  PetscInt vStart = 0, vEnd = 0, eStart = 0, eEnd = 0;
+  PetscInt ndof_global = 0;
+
+  // History per local edge (edge e has index e - eStart), owned by the edge's rank.
+  std::vector<boltnet::History> committed;
+  // The joints at the last converged step, evaluated against the history before it (so that the
+  // state says what the joint did during the step: a joint that slid reads 'slide', not 'stick').
+  std::vector<boltnet::Response> accepted;
+  std::vector<boltnet::Vec6>     accepted_jump;
+  // Joint states at each Newton iterate of the current solve (local edges), for the monitor and
+  // for naming the joints that kept changing state when a step fails.
+  std::vector<std::vector<PetscInt>> state_trace;
+  PetscBool                          user_atol = PETSC_FALSE; // -snes_atol given: keep it
+
+  // Boundary conditions on owned rows (global indices).
+  std::vector<PetscInt>  dirichlet_rows;
+  std::vector<PetscReal> dirichlet_values; // per unit load factor
+  std::vector<PetscInt>  force_rows;
+  std::vector<PetscReal> force_values;
+
+  PetscReal lambda_target = 0; // load factor of the step being solved
+  PetscReal lambda        = 0; // load factor of the last converged step
+
+  // Record of the solve.
+  std::vector<boltnet::StepInfo> steps;
+  PetscInt total_cutbacks = 0;
+  std::string failure; // non-empty after a step failed beyond the cut-back bound
+
+  // Called on every rank after each converged step.
+  std::function<PetscErrorCode(BoltnetAssembly, const boltnet::StepInfo &)> on_step;
+};
+
+namespace boltnet {
+
+// Network assembly (network/assembly.cpp).
+PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a);
+PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx);
+PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx);
+// Evaluate every local joint at X against the committed history (no side effects).
+PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps = nullptr);
+// Joints whose state at X differs from their state at ref (global count).
+PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx);
+// Global counts of joints per State at X.
+PetscErrorCode AssemblyStateCounts(BoltnetAssembly a, Vec X, PetscInt counts[5]);
+// Accept the converged point X: keep the joints' responses there, commit their trial history.
+PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X);
+// Gather the records of every joint at the last accepted point to rank 0 (sorted by joint id).
+PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord> &records);
+// Impose the prescribed values of the constrained dof at load factor lambda on X.
+PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda);
+
+// Solver (solver/*.cpp).
+PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);
+PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx);
+// Names of the joints that changed state between the last two iterates of a failed step.
+PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, Vec X0, Vec X, std::string &msg);
+
+} // namespace boltnet

@@ -1,0 +1,212 @@
+// SNESLINESEARCHBOLTNET: a backtracking line search that knows about joint states.
+//
+// The joint laws are piecewise smooth: the residual has kinks where a joint changes state, and the
+// state-switched tangent is exact only on the side of the kink where it was computed. A full Newton
+// step that crosses kinks can overshoot and, on the way back, cross them again: the iterates chatter
+// between states and Newton never converges (docs/solver.md shows such a case). This line search
+//   1. tries the full (damped) step and accepts it on sufficient decrease of ||F|| (as PETSc's bt);
+//   2. otherwise, if a joint-state function was attached (boltnet's assembly does it), bisects the
+//      step for the first point where a joint changes state and tries just past it: up to that point
+//      the model is smooth, so the step is safe, and the next Jacobian sees the new state;
+//   3. otherwise backtracks with the quadratic model of bt.
+// Without a state function (any PETSc program loading the plugin) it is steps 1 and 3: a safeguarded
+// Armijo backtracking that keeps the contract of bt (pre/post-check, maxstep, Inf/NaN and domain
+// errors cut the step, failure reported as a line-search reason).
+#include "boltnet.h"
+#include "core/compat.h"
+
+#include <petsc/private/linesearchimpl.h>
+#include <petsc/private/snesimpl.h>
+
+#include <cmath>
+
+namespace {
+
+struct LineSearchBoltnet {
+  PetscReal            alpha     = 1e-4; // sufficient decrease parameter
+  PetscInt             bisections = 12;  // resolution of the search for the first state change: 2^-n
+  BoltnetStateChangeFn statefn   = nullptr;
+  void                *statectx  = nullptr;
+  PetscInt             kinkSteps = 0;     // statistics, shown by -snes_linesearch_view
+  PetscInt             backtracks = 0;
+};
+
+// F at W = X - lambda Y; returns gnorm = inf when F could not be evaluated there.
+PetscErrorCode TryStep(SNESLineSearch ls, SNES snes, Vec X, Vec Y, PetscReal lambda, Vec W, Vec G, PetscReal *gnorm)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecWAXPY(W, -lambda, Y, X));
+  if (ls->ops->viproject) PetscCall((*ls->ops->viproject)(snes, W));
+  PetscCall((*ls->ops->snesfunc)(snes, W, G));
+  if (snes->domainerror) {
+    snes->domainerror = PETSC_FALSE;
+    *gnorm            = PETSC_INFINITY;
+    PetscFunctionReturn(0);
+  }
+  PetscCall(VecNorm(G, NORM_2, gnorm));
+  if (PetscIsInfOrNanReal(*gnorm)) *gnorm = PETSC_INFINITY;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
+{
+  auto     *bn = static_cast<LineSearchBoltnet *>(ls->data);
+  SNES      snes;
+  Vec       X, F, Y, W, G;
+  PetscReal fnorm, xnorm, ynorm, gnorm, lambda, minlambda, maxstep;
+  PetscInt  maxits;
+  PetscBool changed_y = PETSC_FALSE, changed_w = PETSC_FALSE, accepted = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESLineSearchGetSNES(ls, &snes));
+  PetscCall(SNESLineSearchGetVecs(ls, &X, &F, &Y, &W, &G));
+  PetscCall(SNESLineSearchGetNorms(ls, &xnorm, &fnorm, &ynorm));
+  PetscCall(SNESLineSearchGetLambda(ls, &lambda));
+  PetscCall(SNESLineSearchGetTolerances(ls, &minlambda, &maxstep, nullptr, nullptr, nullptr, &maxits));
+  PetscCall(SNESLineSearchSetReason(ls, SNES_LINESEARCH_SUCCEEDED));
+
+  PetscCall(SNESLineSearchPreCheck(ls, X, Y, &changed_y));
+  PetscCall(VecNorm(Y, NORM_2, &ynorm));
+  if (ynorm == 0.0) { // nothing to do: keep X and F
+    PetscCall(SNESLineSearchSetNorms(ls, xnorm, fnorm, ynorm));
+    PetscFunctionReturn(0);
+  }
+  if (ynorm > maxstep) { // step limit, as bt
+    PetscCall(VecScale(Y, maxstep / ynorm));
+    ynorm = maxstep;
+  }
+  lambda = ls->damping;
+
+  const PetscReal f2    = fnorm * fnorm;
+  PetscBool       kinks = bn->statefn ? PETSC_TRUE : PETSC_FALSE;
+  for (PetscInt it = 0; it < maxits && lambda >= minlambda; ++it) {
+    PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm));
+    if (gnorm * gnorm <= (1.0 - 2.0 * bn->alpha * lambda) * f2) {
+      accepted = PETSC_TRUE;
+      break;
+    }
+    if (kinks) { // look for the first joint state change on (0, lambda]
+      kinks = PETSC_FALSE;
+      PetscInt n;
+      PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+      if (n > 0) {
+        PetscReal lo = 0.0, hi = lambda;
+        for (PetscInt k = 0; k < bn->bisections; ++k) {
+          const PetscReal mid = 0.5 * (lo + hi);
+          PetscCall(VecWAXPY(W, -mid, Y, X));
+          PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+          if (n > 0) hi = mid;
+          else lo = mid;
+        }
+        if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: first joint state change at lambda in (%g, %g]\n", (double)lo, (double)hi));
+        bn->kinkSteps++;
+        lambda = hi;
+        continue; // try just past the first state change
+      }
+    }
+    // Quadratic backtracking on phi(l) = ||F(X - l Y)||^2 / 2 with phi'(0) = -||F||^2 (Newton direction).
+    bn->backtracks++;
+    PetscReal next = 0.5 * lambda;
+    if (std::isfinite(gnorm)) {
+      const PetscReal denom = gnorm * gnorm - f2 + 2.0 * lambda * f2;
+      if (denom > 0) next = lambda * lambda * f2 / denom;
+    }
+    lambda = PetscMax(0.1 * lambda, PetscMin(0.5 * lambda, next));
+    if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: ||F|| %g -> %g, backtracking to lambda %g\n", (double)fnorm, (double)gnorm, (double)lambda));
+  }
+  if (!accepted) {
+    if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: no sufficient decrease of ||F|| down to lambda %g\n", (double)lambda));
+    PetscCall(SNESLineSearchSetReason(ls, SNES_LINESEARCH_FAILED_REDUCT));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(SNESLineSearchPostCheck(ls, X, Y, W, &changed_y, &changed_w));
+  if (changed_w) {
+    PetscCall((*ls->ops->snesfunc)(snes, W, G));
+    PetscCall(VecNorm(G, NORM_2, &gnorm));
+  }
+  PetscCall(VecCopy(W, X));
+  PetscCall(VecCopy(G, F));
+  PetscCall(VecNorm(X, NORM_2, &xnorm));
+  PetscCall(SNESLineSearchSetLambda(ls, lambda));
+  PetscCall(SNESLineSearchSetNorms(ls, xnorm, gnorm, lambda * ynorm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SNESLineSearchSetFromOptions_Boltnet(SNESLineSearch ls, PetscOptionItems *PetscOptionsObject)
+{
+  auto *bn = static_cast<LineSearchBoltnet *>(ls->data);
+  PetscFunctionBeginUser;
+  PetscOptionsHeadBegin(PetscOptionsObject, "SNESLineSearch boltnet options");
+  PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_alpha", "Sufficient decrease parameter of ||F||^2", "SNESLineSearchBoltnet", bn->alpha, &bn->alpha, nullptr));
+  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_bisections", "Bisections that locate the first joint state change along the step (resolution 2^-n)", "SNESLineSearchBoltnet", bn->bisections, &bn->bisections, nullptr));
+  PetscOptionsHeadEnd();
+  PetscCheck(bn->alpha > 0 && bn->alpha < 0.5, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_alpha %g must lie in (0, 0.5)", (double)bn->alpha);
+  PetscCheck(bn->bisections >= 1 && bn->bisections <= 50, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_bisections %" PetscInt_FMT " must lie in [1, 50]", bn->bisections);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SNESLineSearchView_Boltnet(SNESLineSearch ls, PetscViewer viewer)
+{
+  auto     *bn = static_cast<LineSearchBoltnet *>(ls->data);
+  PetscBool ascii;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
+  if (ascii) {
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, %" PetscInt_FMT " bisections, joint states %s\n", (double)bn->alpha, bn->bisections, bn->statefn ? "attached" : "not attached (plain backtracking)"));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: steps limited to a state change %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->kinkSteps, bn->backtracks));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction_Boltnet(SNESLineSearch ls, BoltnetStateChangeFn fn, void *ctx)
+{
+  auto *bn = static_cast<LineSearchBoltnet *>(ls->data);
+  PetscFunctionBeginUser;
+  bn->statefn  = fn;
+  bn->statectx = ctx;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SNESLineSearchDestroy_Boltnet(SNESLineSearch ls)
+{
+  PetscFunctionBeginUser;
+  delete static_cast<LineSearchBoltnet *>(ls->data);
+  ls->data = nullptr;
+  PetscCall(PetscObjectComposeFunction((PetscObject)ls, "SNESLineSearchBoltnetSetStateChangeFunction_C", nullptr));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+/*@C
+  SNESLineSearchBoltnetSetStateChangeFunction - gives the boltnet line search a function that counts
+  the joints whose state differs between two points; a no-op for other line search types.
+
+  Logically collective
+
+  Input Parameters:
++ ls  - the line search
+. fn  - the counting function (collective: returns the global count)
+- ctx - its context
+@*/
+PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction(SNESLineSearch ls, BoltnetStateChangeFn fn, void *ctx)
+{
+  PetscFunctionBeginUser;
+  PetscTryMethod(ls, "SNESLineSearchBoltnetSetStateChangeFunction_C", (SNESLineSearch, BoltnetStateChangeFn, void *), (ls, fn, ctx));
+  PetscFunctionReturn(0);
+}
+
+extern "C" PetscErrorCode SNESLineSearchCreate_Boltnet(SNESLineSearch ls)
+{
+  PetscFunctionBeginUser;
+  ls->ops->apply          = SNESLineSearchApply_Boltnet;
+  ls->ops->destroy        = SNESLineSearchDestroy_Boltnet;
+  ls->ops->setfromoptions = SNESLineSearchSetFromOptions_Boltnet;
+  ls->ops->view           = SNESLineSearchView_Boltnet;
+  ls->ops->reset          = nullptr;
+  ls->ops->setup          = nullptr;
+  ls->data                = new LineSearchBoltnet();
+  ls->max_its             = 40;
+  PetscCall(PetscObjectComposeFunction((PetscObject)ls, "SNESLineSearchBoltnetSetStateChangeFunction_C", SNESLineSearchBoltnetSetStateChangeFunction_Boltnet));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,71 @@
+// Joint-state monitoring: per Newton iteration, the joints in each state and how many changed.
+#include "network/assembly.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace boltnet {
+
+// Records the state of every local joint at each iterate; prints counts with -joint_monitor.
+PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx)
+{
+  BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
+  Vec                   X;
+  std::vector<Response> r;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetSolution(snes, &X));
+  PetscCall(AssemblyEvaluateJoints(a, X, r));
+  if (its == 0) a->state_trace.assign(r.size(), {});
+  PetscInt loc[6] = {0, 0, 0, 0, 0, 0}, glob[6];
+  for (size_t i = 0; i < r.size(); ++i) {
+    const PetscInt s = static_cast<PetscInt>(r[i].state);
+    if (!a->state_trace[i].empty() && a->state_trace[i].back() != s) loc[5]++;
+    a->state_trace[i].push_back(s);
+    loc[s]++;
+  }
+  if (!a->monitor_states) PetscFunctionReturn(0);
+  PetscCall(MPIU_Allreduce(loc, glob, 6, MPIU_INT, MPI_SUM, a->comm));
+  PetscCall(PetscPrintf(a->comm, "  %3" PetscInt_FMT " joints: stick %" PetscInt_FMT " slide %" PetscInt_FMT " contact %" PetscInt_FMT " open %" PetscInt_FMT " linear %" PetscInt_FMT " | changed %" PetscInt_FMT " | ||F|| %g\n", its,
+                        glob[static_cast<int>(State::Stick)], glob[static_cast<int>(State::Slide)], glob[static_cast<int>(State::Contact)], glob[static_cast<int>(State::Open)], glob[static_cast<int>(State::Linear)], glob[5], (double)fnorm));
+  PetscFunctionReturn(0);
+}
+
+// After a failed solve: the joints that changed state most often during it, with their states.
+PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, Vec, Vec, std::string &msg)
+{
+  PetscFunctionBeginUser;
+  // Local summary: (changes, joint id, sequence) for joints that changed state at least twice.
+  std::ostringstream loc;
+  PetscInt           n = 0;
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    const auto &tr = a->state_trace.size() > (size_t)(e - a->eStart) ? a->state_trace[e - a->eStart] : std::vector<PetscInt>{};
+    PetscInt    changes = 0;
+    for (size_t k = 1; k < tr.size(); ++k) changes += tr[k] != tr[k - 1];
+    if (changes < 2 || n >= 10) continue;
+    PetscInt key, nvar;
+    void    *data;
+    PetscCall(DMNetworkGetComponent(a->dm, e, 0, &key, &data, &nvar));
+    loc << "joint " << static_cast<JointComp *>(data)->id << " (" << changes << " changes: ";
+    const size_t first = tr.size() > 8 ? tr.size() - 8 : 0;
+    if (first) loc << "... ";
+    for (size_t k = first; k < tr.size(); ++k) loc << (k > first ? ">" : "") << stateName(static_cast<State>(tr[k]));
+    loc << "); ";
+    ++n;
+  }
+  // Gather the text to rank 0 and broadcast it (error messages are raised collectively).
+  std::string       mine   = loc.str();
+  PetscMPIInt       len    = (PetscMPIInt)mine.size();
+  std::vector<PetscMPIInt> lens(a->size), displs(a->size);
+  PetscCallMPI(MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, a->comm));
+  PetscMPIInt total = 0;
+  for (PetscMPIInt i = 0; i < a->size; ++i) {
+    displs[i] = total;
+    total += lens[i];
+  }
+  std::string all(total, ' ');
+  PetscCallMPI(MPI_Allgatherv(mine.data(), len, MPI_CHAR, all.data(), lens.data(), displs.data(), MPI_CHAR, a->comm));
+  msg = all.empty() ? std::string("no joint changed state more than once") : "joints that kept changing state: " + all;
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet

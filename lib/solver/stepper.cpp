@@ -1,0 +1,122 @@
+// Quasi-static load stepping: SNES per step, history committed only after convergence,
+// automatic cut-back with a bounded number of halvings.
+#include "network/assembly.hpp"
+#include "solver/loadpath.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace boltnet {
+
+PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
+{
+  SNESLineSearch ls;
+  KSP            ksp;
+  PC             pc;
+  PetscFunctionBeginUser;
+  PetscCall(SNESCreate(a->comm, &a->snes));
+  if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
+  PetscCall(SNESSetDM(a->snes, a->dm));
+  PetscCall(SNESSetFunction(a->snes, nullptr, AssemblyFormFunction, a));
+  PetscCall(SNESSetJacobian(a->snes, a->J, a->J, AssemblyFormJacobian, a));
+  PetscCall(SNESMonitorSet(a->snes, MonitorJointStates, a, nullptr));
+  // Defaults that the command line overrides: Newton with boltnet's line search, direct solve.
+  PetscCall(SNESSetType(a->snes, SNESNEWTONLS));
+  PetscCall(SNESGetLineSearch(a->snes, &ls));
+  PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBOLTNET));
+  PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, 1e-10, 0.0, 50, PETSC_DEFAULT));
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCLU));
+  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(SNESSetFromOptions(a->snes));
+  PetscCall(SNESLineSearchBoltnetSetStateChangeFunction(ls, AssemblyCountStateChanges, a));
+  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-snes_atol", &a->user_atol));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// Absolute tolerance for one step: round-off relative to the forces at play, so that a step whose
+// initial residual is already tiny (nothing changes) still converges.
+PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
+{
+  Vec       F;
+  PetscReal r0, fj = 0, fext = 0, loc = 0;
+  PetscFunctionBeginUser;
+  if (a->user_atol) PetscFunctionReturn(0);
+  std::vector<Response> resp;
+  PetscCall(AssemblyEvaluateJoints(a, a->X, resp));
+  for (const Response &r : resp)
+    for (double f : r.force) loc += f * f;
+  PetscCall(MPIU_Allreduce(&loc, &fj, 1, MPIU_REAL, MPIU_SUM, a->comm));
+  loc = 0;
+  for (PetscReal v : a->force_values) loc += v * v;
+  PetscCall(MPIU_Allreduce(&loc, &fext, 1, MPIU_REAL, MPIU_SUM, a->comm));
+  PetscCall(VecDuplicate(Xtry, &F));
+  PetscCall(AssemblyFormFunction(a->snes, Xtry, F, a));
+  PetscCall(VecNorm(F, NORM_2, &r0));
+  PetscCall(VecDestroy(&F));
+  const PetscReal scale = PetscMax(PetscMax(std::sqrt(fj), std::abs(a->lambda_target) * std::sqrt(fext)), r0);
+  PetscCall(SNESSetTolerances(a->snes, scale > 0 ? 1e-12 * scale : 1e-50, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+} // namespace boltnet
+
+using namespace boltnet;
+
+PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal factors[], PetscInt steps_per_segment)
+{
+  Vec Xtry;
+  PetscFunctionBeginUser;
+  PetscCheck(a->dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
+  PetscCheck(steps_per_segment >= 1, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "steps_per_segment %" PetscInt_FMT " must be >= 1", steps_per_segment);
+  const std::vector<PetscReal> targets = LoadPathTargets(a->lambda, std::vector<PetscReal>(factors, factors + n), steps_per_segment);
+  PetscCall(VecDuplicate(a->X, &Xtry));
+  for (PetscReal target : targets) {
+    PetscReal sub  = target - a->lambda; // current increment, halved on failure
+    PetscInt  cuts = 0;
+    while (a->lambda != target) {
+      const PetscBool last = std::abs(target - a->lambda) <= std::abs(sub) * (1 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
+      a->lambda_target     = last ? target : a->lambda + sub;
+      PetscCall(VecCopy(a->X, Xtry));
+      PetscCall(AssemblyApplyDirichlet(a, Xtry, a->lambda_target));
+      PetscCall(SetStepTolerance(a, Xtry));
+      PetscCall(SNESSolve(a->snes, nullptr, Xtry));
+      SNESConvergedReason reason;
+      PetscInt            its;
+      PetscCall(SNESGetConvergedReason(a->snes, &reason));
+      PetscCall(SNESGetIterationNumber(a->snes, &its));
+      if (reason > 0) {
+        PetscCall(AssemblyCommit(a, Xtry));
+        PetscCall(VecCopy(Xtry, a->X));
+        a->lambda = a->lambda_target;
+        StepInfo info{(PetscInt)a->steps.size() + 1, a->lambda, its, cuts};
+        a->steps.push_back(info);
+        cuts = 0;
+        if (a->on_step) PetscCall(a->on_step(a, info));
+        continue;
+      }
+      std::string chatter;
+      PetscCall(AssemblyDescribeChatter(a, a->X, Xtry, chatter));
+      if (cuts >= a->max_cuts) {
+        std::ostringstream m;
+        m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << " did not converge (" << SNESConvergedReasons[reason] << " after " << its
+          << " Newton iterations) after " << cuts << " cut-backs (-load_max_cuts " << a->max_cuts << "); " << chatter;
+        a->failure = m.str();
+        PetscCall(VecDestroy(&Xtry));
+        SETERRQ(a->comm, PETSC_ERR_NOT_CONVERGED, "%s", a->failure.c_str());
+      }
+      ++cuts;
+      ++a->total_cutbacks;
+      sub *= 0.5;
+      PetscCall(PetscInfo(a->snes, "step %zu: %s at load %g, cutting the increment to %g; %s\n", a->steps.size() + 1, SNESConvergedReasons[reason], (double)a->lambda_target, (double)sub, chatter.c_str()));
+      PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu did not converge at load factor %g (%s); cutting the increment to %g. %s\n", a->steps.size() + 1, (double)a->lambda_target, SNESConvergedReasons[reason], (double)sub, chatter.c_str()));
+    }
+  }
+  PetscCall(VecDestroy(&Xtry));
+  PetscFunctionReturn(0);
+}

@@ -1,0 +1,172 @@
+#!/usr/bin/python3
+"""Chart the joints.csv written by the boltnet driver.
+
+Default (paper fig. 3c): x = load factor, y = jump du_t1 (mm), one line per joint,
+markers coloured (and shaped) by the joint state at that step.
+--force: the joint's own response curve, x = du_t1 (mm), y = f_t1 (N).
+
+Usage: plot_joints.py joints.csv -o out.png [--joint ID ...] [--x load|du_t1] [--title T] [--force]
+"""
+# Debian's /usr/bin/python3 is used on purpose: python3-matplotlib/python3-numpy install there.
+import argparse
+import csv
+import sys
+
+try:
+    import numpy as np
+    import matplotlib
+    matplotlib.use("Agg")  # no display needed (CI, containers)
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+except ImportError as e:
+    print(f"plot_joints.py: cannot import {e.name or e}: install python3-matplotlib and python3-numpy "
+          "(apt-get install python3-matplotlib python3-numpy, or run scripts/deps)", file=sys.stderr)
+    sys.exit(2)
+
+COLUMNS = ["step", "load", "joint", "state", "du_n", "du_t1", "du_t2",
+           "f_n", "f_t1", "f_t2", "bearing", "slip_t1", "slip_t2"]
+NUMERIC = ["load", "du_t1", "f_t1"]  # the only columns this script draws
+# One fixed colour (and marker shape) per state word (law.hpp: stateName()), so charts are
+# comparable across runs.
+STATE_COLORS = {
+    "stick": "tab:blue",
+    "slide": "tab:red",
+    "contact": "tab:green",
+    "open": "tab:orange",
+    "linear": "tab:gray",
+}
+STATE_MARKERS = {"stick": "o", "slide": "^", "contact": "s", "open": "v", "linear": "D"}
+UNKNOWN_STATE_COLOR, UNKNOWN_STATE_MARKER = "black", "x"
+# Joint lines avoid the state colours so a line is never mistaken for a state; more joints than
+# colours cycle through line styles.
+JOINT_COLORS = ["black", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan"]
+JOINT_STYLES = ["-", "--", ":", "-."]
+
+
+def fail(msg):
+    print(f"plot_joints.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def read_rows(path):
+    """Return {joint id: {"step": [...], "load": array, ..., "state": [...]}} in file order."""
+    try:
+        f = open(path, newline="")
+    except OSError as e:
+        fail(f"cannot read {path}: {e.strerror}")
+    with f:
+        reader = csv.DictReader(f)
+        header = [h.strip() for h in (reader.fieldnames or [])]
+        if not header:
+            fail(f"{path} is empty (expected header {','.join(COLUMNS)})")
+        reader.fieldnames = header
+        needed = ["step", "joint", "state"] + NUMERIC
+        missing = [c for c in needed if c not in header]
+        if missing:
+            fail(f"{path}: missing column(s) {', '.join(missing)} (header is: {','.join(header)})")
+        joints = {}
+        for lineno, row in enumerate(reader, start=2):
+            if not any(isinstance(v, str) and v.strip() for v in row.values()):
+                continue  # tolerate blank lines
+            short = [c for c in needed if row.get(c) is None or not row[c].strip()]
+            if short:
+                fail(f"{path}:{lineno}: empty or missing value for column(s) {', '.join(short)}")
+            jid = row["joint"].strip()
+            d = joints.setdefault(jid, {"step": [], "state": [], **{c: [] for c in NUMERIC}})
+            col = "step"
+            try:
+                d["step"].append(int(float(row["step"])))
+                for col in NUMERIC:
+                    d[col].append(float(row[col]))
+            except ValueError:
+                fail(f"{path}:{lineno}: column {col}: not a number: {row[col]!r}")
+            d["state"].append(row["state"].strip().lower())
+    if not joints:
+        fail(f"{path} has a header but no data rows")
+    for d in joints.values():
+        for c in NUMERIC:
+            d[c] = np.asarray(d[c], dtype=float)
+    return joints
+
+
+def joint_sort_key(jid):
+    return (0, int(jid), "") if jid.lstrip("-").isdigit() else (1, 0, jid)
+
+
+def main():
+    ap = argparse.ArgumentParser(description="Plot the joint jumps/forces of a boltnet joints.csv.")
+    ap.add_argument("csv", help="joints.csv written by the boltnet driver")
+    ap.add_argument("-o", "--output", required=True, help="output image (e.g. out.png)")
+    ap.add_argument("--joint", nargs="+", metavar="ID", help="only these joint ids (default: all)")
+    ap.add_argument("--x", choices=["load", "du_t1"], default="load",
+                    help="x axis of the default chart: load (default) or du_t1")
+    ap.add_argument("--force", action="store_true",
+                    help="plot f_t1 (N) against du_t1 (mm) instead (the joint's response curve)")
+    ap.add_argument("--title", help="chart title (default: the CSV path)")
+    args = ap.parse_args()
+
+    joints = read_rows(args.csv)
+    ids = sorted(joints, key=joint_sort_key)
+    if args.joint:
+        wanted = [j.strip() for j in args.joint]
+        unknown = [j for j in wanted if j not in joints]
+        if unknown:
+            fail(f"{args.csv}: no joint(s) {', '.join(unknown)} (joints present: {', '.join(ids)})")
+        ids = [j for j in ids if j in wanted]
+
+    if args.force:
+        xcol, ycol = "du_t1", "f_t1"
+        xlabel, ylabel = "jump du_t1 (mm)", "force f_t1 (N)"
+    elif args.x == "du_t1":
+        # Axes swapped: the classic load-slip curve (jump on x, load on y).
+        xcol, ycol = "du_t1", "load"
+        xlabel, ylabel = "jump du_t1 (mm)", "load factor (N for the shipped scenes)"
+    else:
+        xcol, ycol = "load", "du_t1"
+        xlabel, ylabel = "load factor (N for the shipped scenes)", "jump du_t1 (mm)"
+
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    line_handles = []
+    states_seen = []
+    for i, jid in enumerate(ids):
+        d = joints[jid]
+        order = np.argsort(d["step"], kind="stable")  # steps in order, even if ranks wrote out of order
+        x, y = d[xcol][order], d[ycol][order]
+        states = [d["state"][k] for k in order]
+        style = JOINT_STYLES[(i // len(JOINT_COLORS)) % len(JOINT_STYLES)]
+        (line,) = ax.plot(x, y, style, color=JOINT_COLORS[i % len(JOINT_COLORS)], lw=1.3,
+                          label=f"joint {jid}", zorder=2)
+        line_handles.append(line)
+        for s in dict.fromkeys(states):  # one scatter per state: colour and marker shape
+            mask = np.array([st == s for st in states])
+            ax.scatter(x[mask], y[mask], s=22, color=STATE_COLORS.get(s, UNKNOWN_STATE_COLOR),
+                       marker=STATE_MARKERS.get(s, UNKNOWN_STATE_MARKER), edgecolors="none", zorder=3)
+            if s not in states_seen:
+                states_seen.append(s)
+
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(args.title if args.title is not None else args.csv)
+    ax.grid(True, alpha=0.4)
+
+    # Two legends outside the axes (never hide data): joints (lines) and states (marker colour/shape),
+    # states in a fixed order.
+    leg1 = ax.legend(handles=line_handles, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                     fontsize="small", title="joints")
+    ax.add_artist(leg1)
+    order = [s for s in STATE_COLORS if s in states_seen] + [s for s in states_seen if s not in STATE_COLORS]
+    state_handles = [Line2D([], [], ls="", marker=STATE_MARKERS.get(s, UNKNOWN_STATE_MARKER), markersize=6,
+                            color=STATE_COLORS.get(s, UNKNOWN_STATE_COLOR), label=s) for s in order]
+    ax.legend(handles=state_handles, loc="lower left", bbox_to_anchor=(1.01, 0.0),
+              fontsize="small", title="state")
+
+    fig.tight_layout()
+    try:
+        fig.savefig(args.output, dpi=150, bbox_inches="tight")  # keeps the outside legends
+    except OSError as e:
+        fail(f"cannot write {args.output}: {e.strerror}")
+    print(f"plot_joints.py: wrote {args.output}")
+
+
+if __name__ == "__main__":
+    main()
