@@ -169,7 +169,8 @@ std::string validate(const Params &p)
   nonneg("pretension", p.pretension);
   nonneg("clamp_coupling", p.clamp_coupling);
   if (!msg.str().empty()) return msg.str();
-  if (p.nf < 1 || p.nf != std::floor(p.nf)) msg << "nf = " << p.nf << " must be a whole number >= 1 (friction interfaces); ";
+  if (!std::isfinite(p.offset[0]) || !std::isfinite(p.offset[1])) msg << "offset must be finite; ";
+  if (!(p.nf >= 1) || !std::isfinite(p.nf) || p.nf != std::floor(p.nf)) msg << "nf = " << p.nf << " must be a whole number >= 1 (friction interfaces); ";
   if (p.law != Law::Spring && std::hypot(p.offset[0], p.offset[1]) > p.gap)
     msg << "offset (" << p.offset[0] << ", " << p.offset[1] << ") puts the bolt outside its clearance circle of radius gap = " << p.gap << "; ";
   if (p.law == Law::Friction) {

@@ -86,52 +86,51 @@ Mat6 GlobalTangent(const PetscReal R[9], const Mat6 &K)
   return G;
 }
 
-// A (rows x cols) SeqAIJ pattern with a dense 6x6 block at node (ni, nj): what one joint couples.
-PetscErrorCode NodeBlockPattern(PetscInt rows, PetscInt cols, PetscInt ni, PetscInt nj, Mat *B)
+// The Jacobian's nonzero pattern, counted exactly with MATPREALLOCATOR: each joint couples the
+// 6 dof of its node on patch a with those of its node on patch b (12 x 12), wherever the two
+// vertices live; each owned patch contributes its own pattern (a rigid patch: its diagonal).
+// DMNetwork's own user-block preallocation (DMNetworkHasJacobian + DMNetworkVertexSetMatrix) was
+// tried first and, in PETSc 3.18.5, under-allocates couplings through edges owned by another rank
+// ("new nonzero caused a malloc" inside DMCreateMatrix_Network on the chain scene at 2 ranks):
+// docs/architecture.md.
+PetscErrorCode CreateJacobian(BoltnetAssembly a)
 {
+  Mat      pre;
+  PetscInt n;
   PetscFunctionBeginUser;
-  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, rows, cols, kNodeDof, nullptr, B));
-  for (PetscInt i = 0; i < kNodeDof; ++i)
-    for (PetscInt j = 0; j < kNodeDof; ++j) PetscCall(MatSetValue(*B, kNodeDof * ni + i, kNodeDof * nj + j, 1.0, INSERT_VALUES));
-  PetscCall(MatAssemblyBegin(*B, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(*B, MAT_FINAL_ASSEMBLY));
-  PetscFunctionReturn(0);
-}
-
-// Sparse Jacobian blocks for every vertex, ghosts included: J[0] the patch itself, J[1+2i] the
-// i-th supporting edge (joints carry no dof: none), J[2+2i] the vertex across that edge.
-PetscErrorCode SetVertexPatterns(BoltnetAssembly a, std::vector<Mat> &owned)
-{
-  PetscFunctionBeginUser;
-  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
-    const PatchComp *pv = GetPatch(a->dm, v);
-    PetscCheck(pv, PETSC_COMM_SELF, PETSC_ERR_PLIB, "vertex %" PetscInt_FMT " has no patch", v);
-    PetscInt        nedges;
-    const PetscInt *edges;
-    PetscCall(DMNetworkGetSupportingEdges(a->dm, v, &nedges, &edges));
-    std::vector<Mat> J(1 + 2 * nedges, nullptr);
-    const PetscInt   nv = kNodeDof * pv->nnodes;
-    // Self block: the patch's own stiffness (none for a rigid patch) plus the joints' diagonal blocks.
-    Mat self;
-    PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, nv, nv, kNodeDof, nullptr, &self));
-    for (PetscInt i = 0; i < nedges; ++i) {
-      EdgeView ev;
-      PetscCall(GetEdge(a->dm, edges[i], &ev));
-      const PetscBool  isA   = (ev.va == v) ? PETSC_TRUE : PETSC_FALSE;
-      const PetscInt   mine  = isA ? ev.joint->node_a : ev.joint->node_b;
-      const PetscInt   other = isA ? ev.joint->node_b : ev.joint->node_a;
-      const PatchComp *po    = GetPatch(a->dm, isA ? ev.vb : ev.va);
-      for (PetscInt r = 0; r < kNodeDof; ++r)
-        for (PetscInt c = 0; c < kNodeDof; ++c) PetscCall(MatSetValue(self, kNodeDof * mine + r, kNodeDof * mine + c, 1.0, INSERT_VALUES));
-      PetscCall(NodeBlockPattern(nv, kNodeDof * po->nnodes, mine, other, &J[2 + 2 * i]));
-      owned.push_back(J[2 + 2 * i]);
+  PetscCall(VecGetLocalSize(a->X, &n));
+  PetscCall(MatCreate(a->comm, &pre));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pre, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetUp(pre));
+  PetscScalar zeros[144] = {0};
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    EdgeView ev;
+    PetscInt ga, gb, rows[12];
+    PetscCall(GetEdge(a->dm, e, &ev));
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &ga));
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &gb));
+    for (int i = 0; i < kNodeDof; ++i) {
+      rows[i]            = ga + kNodeDof * ev.joint->node_a + i;
+      rows[kNodeDof + i] = gb + kNodeDof * ev.joint->node_b + i;
     }
-    PetscCall(MatAssemblyBegin(self, MAT_FINAL_ASSEMBLY));
-    PetscCall(MatAssemblyEnd(self, MAT_FINAL_ASSEMBLY));
-    J[0] = self;
-    owned.push_back(self);
-    PetscCall(DMNetworkVertexSetMatrix(a->dm, v, J.data()));
+    PetscCall(MatSetValues(pre, 12, rows, 12, rows, zeros, INSERT_VALUES));
   }
+  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
+    PetscBool ghost;
+    PetscInt  goff;
+    PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
+    if (ghost) continue;
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, v, ALL_COMPONENTS, &goff));
+    for (PetscInt i = 0; i < kNodeDof * GetPatch(a->dm, v)->nnodes; ++i) PetscCall(MatSetValue(pre, goff + i, goff + i, 0.0, INSERT_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(a->comm, &a->J));
+  PetscCall(MatSetType(a->J, MATAIJ));
+  PetscCall(MatSetSizes(a->J, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, a->J));
+  PetscCall(MatDestroy(&pre));
   PetscFunctionReturn(0);
 }
 
@@ -240,18 +239,12 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   PetscCall(DMNetworkGetEdgeRange(a->dm, &a->eStart, &a->eEnd));
   a->committed.assign(a->eEnd - a->eStart, History{});
 
-  // Sparse user Jacobian blocks (ghost vertices included), then the matrix.
-  std::vector<Mat> patterns;
-  PetscCall(DMNetworkHasJacobian(a->dm, PETSC_FALSE, PETSC_TRUE));
-  PetscCall(SetVertexPatterns(a, patterns));
-  PetscCall(DMCreateMatrix(a->dm, &a->J));
-  for (Mat &m : patterns) PetscCall(MatDestroy(&m));
-  PetscCall(MatSetOption(a->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
-  PetscCall(MatSetOption(a->J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
-
   PetscCall(DMCreateGlobalVector(a->dm, &a->X));
   PetscCall(VecGetSize(a->X, &a->ndof_global));
   PetscCall(VecSet(a->X, 0.0));
+  PetscCall(CreateJacobian(a));
+  PetscCall(MatSetOption(a->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(MatSetOption(a->J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   PetscCall(SetUpBoundaryRows(a));
   PetscFunctionReturn(0);
 }

@@ -73,7 +73,7 @@ struct _p_BoltnetAssembly {
   std::vector<boltnet::BCDesc>    bcs;
 
   // Options.
-  boltnet::Tangent tangent        = boltnet::Tangent::Paper;
+  boltnet::Tangent tangent        = boltnet::Tangent::Consistent; // docs/solver.md: why
   PetscInt         max_cuts       = 8;
   PetscBool        monitor_states = PETSC_FALSE;
   PetscBool        setfromoptions_called = PETSC_FALSE;

@@ -79,8 +79,13 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
 
   const PetscReal f2    = fnorm * fnorm;
   PetscBool       kinks = bn->statefn ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal       best = PETSC_INFINITY, bestlambda = 0; // the best point tried, for an inexact Jacobian
   for (PetscInt it = 0; it < maxits && lambda >= minlambda; ++it) {
     PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm));
+    if (gnorm < best) {
+      best       = gnorm;
+      bestlambda = lambda;
+    }
     if (gnorm * gnorm <= (1.0 - 2.0 * bn->alpha * lambda) * f2) {
       accepted = PETSC_TRUE;
       break;
@@ -113,6 +118,14 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
     }
     lambda = PetscMax(0.1 * lambda, PetscMin(0.5 * lambda, next));
     if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: ||F|| %g -> %g, backtracking to lambda %g\n", (double)fnorm, (double)gnorm, (double)lambda));
+  }
+  if (!accepted && best < fnorm) {
+    // With a Jacobian that is not the derivative (the paper's tangent) the direction need not be a
+    // descent direction for ||F||: accept the best decrease found rather than stop.
+    lambda = bestlambda;
+    PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm));
+    accepted = PETSC_TRUE;
+    if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: no sufficient decrease; taking the best decrease, lambda %g, ||F|| %g\n", (double)lambda, (double)gnorm));
   }
   if (!accepted) {
     if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: no sufficient decrease of ||F|| down to lambda %g\n", (double)lambda));

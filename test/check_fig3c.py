@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Checks a fig3c joints.csv against an independent reference of the 1D frictional macroelement.
+
+Requirement (issue 2, items 2, 7, 9): stick, slide and bearing follow the paper's closed form under
+monotonic loading; unloading is elastic until the force has dropped by 2G; reverse loading slides
+back across the clearance and bears on the other side.
+
+The reference is written force-first (the driver is displacement-first): for an applied force F and
+the slip w committed at the previous step, the joint sticks if |F - h(w)| <= G, with
+du = w + (F - h(w))/ke; otherwise it slides to the w' that solves G s + h(w') = F (h is monotone and
+piecewise linear, inverted exactly), du = w' + G s/ke, with h(w) = kg w + (kc - kg) <|w| - j>+ sign(w).
+Usage: check_fig3c.py joints.csv ke kg kc gap G [rtol]
+"""
+import csv
+import sys
+
+
+def h(w, kg, kc, j):
+    r = abs(w)
+    return kg * w + (kc - kg) * max(0.0, r - j) * (1 if w > 0 else -1)
+
+
+def h_inverse(y, kg, kc, j):
+    """w with h(w) = y (h is odd, increasing, slope kg inside the clearance and kc beyond)."""
+    s = 1.0 if y >= 0 else -1.0
+    y = abs(y)
+    w = y / kg if kg > 0 and y <= kg * j else j + (y - kg * j) / kc
+    return s * w
+
+
+def main():
+    path = sys.argv[1]
+    ke, kg, kc, j, G = map(float, sys.argv[2:7])
+    rtol = float(sys.argv[7]) if len(sys.argv) > 7 else 1e-9
+    rows = list(csv.DictReader(open(path)))
+    assert rows, f"{path}: no rows"
+    w = 0.0
+    worst = 0.0
+    states = set()
+    for row in rows:
+        F = float(row["load"])
+        ff = F - h(w, kg, kc, j)
+        if abs(ff) <= G * (1 + 1e-9):
+            du, state = w + ff / ke, "stick"
+        else:
+            s = 1.0 if ff > 0 else -1.0
+            w = h_inverse(F - G * s, kg, kc, j)
+            du = w + G * s / ke
+            state = "contact" if abs(w) > j else "slide"
+        got_du, got_f = float(row["du_t1"]), float(row["f_t1"])
+        err = abs(got_du - du) / max(abs(du), 1e-3 * j)
+        worst = max(worst, err)
+        if err > rtol or abs(got_f - F) > rtol * max(abs(F), 1.0) or row["state"] != state:
+            print(f"step {row['step']} load {F}: expected du {du!r} {state}, got du {got_du!r} f {got_f!r} {row['state']}")
+            return 1
+        states.add(state)
+    missing = {"stick", "slide", "contact"} - states
+    if missing:
+        print(f"the load path never reached {sorted(missing)}")
+        return 1
+    print(f"{len(rows)} rows match the closed form (worst relative error {worst:.2e}); states seen {sorted(states)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

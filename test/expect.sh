@@ -1,0 +1,39 @@
+#!/bin/bash
+# expect.sh: run a command and check how it ends.
+#   expect.sh [--fail] [--match REGEX]... [--unchanged FILE]... -- command [args...]
+# --fail            the command must exit non-zero (default: it must exit 0)
+# --match REGEX     its output (stdout and stderr) must match REGEX (grep -E)
+# --unchanged FILE  FILE must be byte-for-byte the same after the command (nothing written is corrupted)
+set -u
+want_fail=0
+matches=()
+keep=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --fail) want_fail=1 ;;
+    --match) matches+=("$2"); shift ;;
+    --unchanged) keep+=("$1" "$2"); keep=("${keep[@]:0:${#keep[@]}-2}" "$2"); shift ;;
+    --) shift; break ;;
+    *) echo "expect.sh: unknown argument $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+sums=()
+for f in "${keep[@]+"${keep[@]}"}"; do sums+=("$(cksum < "$f")"); done
+out=$("$@" 2>&1)
+status=$?
+echo "$out"
+echo "[exit status $status]"
+ok=1
+if [ $want_fail = 1 ] && [ $status = 0 ]; then echo "expect.sh: expected a failure, the command succeeded"; ok=0; fi
+if [ $want_fail = 0 ] && [ $status != 0 ]; then echo "expect.sh: expected success, the command exited $status"; ok=0; fi
+for r in "${matches[@]+"${matches[@]}"}"; do
+  if ! grep -Eq -- "$r" <<<"$out"; then echo "expect.sh: output does not match: $r"; ok=0; fi
+done
+i=0
+for f in "${keep[@]+"${keep[@]}"}"; do
+  if [ "$(cksum < "$f")" != "${sums[$i]}" ]; then echo "expect.sh: $f was changed"; ok=0; fi
+  i=$((i + 1))
+done
+[ $ok = 1 ] && echo "expect.sh: as expected" && exit 0
+exit 1

@@ -1,0 +1,80 @@
+# Tests of boltnet as seen from outside: the line search plugin in a PETSc program that does not link
+# boltnet, the public C API (boltnet.h) against closed forms, and the installed package.
+# Included from test/CMakeLists.txt, which defines boltnet_mpi_test().
+#
+# The MPI runs use -options_left (a left option fails the test: Debian's PETSc ignores typos) and
+# -malloc_debug -malloc_dump (Debian's build is not a debug build, but -malloc_debug turns PETSc's
+# tracing malloc on, and -malloc_dump then lists every PETSc allocation not freed: the test fails).
+set(BOLTNET_TEST_FAIL_REGEX "PETSC ERROR;unused database option;bytes [A-Za-z_0-9]+\\(\\) at ")
+
+# boltnet_checked_mpi_test(NAME RANKS REGEX COMMAND...): like boltnet_mpi_test, for tests that check
+# the output with PASS_REGULAR_EXPRESSION. ctest ignores the exit code of such tests, so the command
+# runs under `sh -c` which appends "[exit status N]" (mpiexec's status: non-zero when any rank
+# failed) and REGEX has to match that too. The environment is boltnet_mpi_test's.
+function(boltnet_checked_mpi_test name ranks regex)
+  add_test(NAME ${name}_np${ranks}
+    COMMAND sh -c "\"$@\" 2>&1; echo \"[exit status $?]\"" sh
+            ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${ranks} --oversubscribe ${ARGN})
+  set_tests_properties(${name}_np${ranks} PROPERTIES PROCESSORS ${ranks}
+    PASS_REGULAR_EXPRESSION "${regex}"
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_btl_vader_single_copy_mechanism=none")
+endfunction()
+
+# ---------------------------------------------------------------------------------------------------
+# foreign_snes: PETSc and MPI only. Requirement: any PETSc program gets the boltnet line search with
+# -dll_append libboltnet_snes.so, and without it the type is unknown.
+add_executable(foreign_snes foreign_snes.c)
+target_link_libraries(foreign_snes PRIVATE PkgConfig::PETSC MPI::MPI_C m)
+
+# The program must not depend on libboltnet, directly or through another library.
+add_test(NAME foreign_snes_no_boltnet_dependency
+  COMMAND sh -c "deps=$(ldd \"$0\") || exit 1; if echo \"$deps\" | grep boltnet; then echo \"$0 depends on libboltnet\"; exit 1; fi; echo \"$0: no libboltnet among its $(echo \"$deps\" | wc -l) shared libraries\""
+          $<TARGET_FILE:foreign_snes>)
+
+# With the plugin: converges to the exact solution with the boltnet line search, which had to cut
+# steps (quadratic backtracks >= 1, as the full steps diverge: see foreign_snes_full_newton_fails),
+# shown by -snes_view; no option left unused. (PETSc 3.18 has no -snes_linesearch_view: the line
+# search is viewed inside -snes_view.)
+set(_foreign_ok
+  "type: boltnet\n *boltnet: alpha [^\n]*not attached[^\n]*\n *boltnet: steps limited to a state change 0, quadratic backtracks [1-9][0-9]*\n.*line search type boltnet\n.*foreign_snes: PASS\n.*There are no unused options.*\\[exit status 0\\]")
+foreach(ranks 1 2)
+  boltnet_checked_mpi_test(foreign_snes_plugin ${ranks} "${_foreign_ok}"
+    $<TARGET_FILE:foreign_snes> -dll_append $<TARGET_FILE:boltnet_snes>
+    -snes_linesearch_type boltnet -snes_view -options_left -malloc_debug -malloc_dump)
+  set_tests_properties(foreign_snes_plugin_np${ranks} PROPERTIES FAIL_REGULAR_EXPRESSION "${BOLTNET_TEST_FAIL_REGEX}")
+endforeach()
+
+# Without the plugin, the type is unknown: a PETSc error naming it and a non-zero exit code.
+boltnet_checked_mpi_test(foreign_snes_without_plugin 1
+  "Unable to find requested Line Search type boltnet\n.*\\[exit status [1-9][0-9]*\\]"
+  $<TARGET_FILE:foreign_snes> -snes_linesearch_type boltnet)
+
+# The problem is a real test of a line search: full Newton steps (basic) do not converge from x0.
+boltnet_checked_mpi_test(foreign_snes_full_newton_fails 1
+  "line search type basic\nforeign_snes: SNES DIVERGED_.*\\[exit status [1-9][0-9]*\\]"
+  $<TARGET_FILE:foreign_snes> -snes_linesearch_type basic)
+
+# ---------------------------------------------------------------------------------------------------
+# test_api: boltnet.h only. Requirement: the public API gives the closed-form joint responses
+# (friction: stick, slide, bearing, elastic unloading over 2G, reverse slip; spring; contact law)
+# at 1, 2 and 3 ranks.
+add_executable(test_api test_api.c)
+target_link_libraries(test_api PRIVATE boltnet m)
+foreach(ranks 1 2 3)
+  boltnet_mpi_test(test_api ${ranks} $<TARGET_FILE:test_api> -options_left -malloc_debug -malloc_dump)
+  set_tests_properties(test_api_np${ranks} PROPERTIES FAIL_REGULAR_EXPRESSION "${BOLTNET_TEST_FAIL_REGEX}")
+endforeach()
+# The same closed forms with the consistent tangent, set through the assemblies' option prefixes
+# (an ignored prefix would leave the options unused).
+boltnet_mpi_test(test_api_consistent_tangent 2 $<TARGET_FILE:test_api>
+  -fric_joint_tangent consistent -lin_joint_tangent consistent -options_left -malloc_debug -malloc_dump)
+set_tests_properties(test_api_consistent_tangent_np2 PROPERTIES FAIL_REGULAR_EXPRESSION "${BOLTNET_TEST_FAIL_REGEX}")
+
+# ---------------------------------------------------------------------------------------------------
+# check_install: install into a temporary prefix, build test_api.c against the installed package
+# through pkg-config and through find_package(boltnet), run both; the installed plugin and driver
+# find the installed library, and foreign_snes uses the installed plugin.
+add_test(NAME check_install
+  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/check_install.sh ${PROJECT_BINARY_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/test_api.c
+          ${CMAKE_COMMAND} ${MPIEXEC_EXECUTABLE} ${CMAKE_INSTALL_LIBDIR} ${CMAKE_C_COMPILER} $<TARGET_FILE:foreign_snes>)
+set_tests_properties(check_install PROPERTIES TIMEOUT 600)
