@@ -1,5 +1,6 @@
 // DMNetwork assembly: patches are vertices, joints are edges (docs/architecture.md).
 #include "network/assembly.hpp"
+#include "core/guard.hpp"
 
 #include <algorithm>
 #include <map>
@@ -275,7 +276,7 @@ PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Resp
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx)
+static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
   Vec                   Xl, Fl;
@@ -321,7 +322,7 @@ PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
   std::vector<Response> resp;
@@ -358,7 +359,7 @@ PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx)
+static PetscErrorCode AssemblyCountStateChangesImpl(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
   std::vector<Response> r0, r1;
@@ -439,6 +440,22 @@ PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda
   for (size_t i = 0; i < a->dirichlet_rows.size(); ++i) x[a->dirichlet_rows[i] - rstart] = lambda * a->dirichlet_values[i];
   PetscCall(VecRestoreArray(X, &x));
   PetscFunctionReturn(0);
+}
+
+
+PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx)
+{
+  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyFormFunctionImpl(snes, X, F, ctx); });
+}
+
+PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+{
+  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyFormJacobianImpl(snes, X, J, P, ctx); });
+}
+
+PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx)
+{
+  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyCountStateChangesImpl(snes, ref, X, nchanged, ctx); });
 }
 
 } // namespace boltnet

@@ -14,6 +14,7 @@
 // errors cut the step, failure reported as a line-search reason).
 #include "boltnet.h"
 #include "core/compat.h"
+#include "core/guard.hpp"
 
 #include <petsc/private/linesearchimpl.h>
 #include <petsc/private/snesimpl.h>
@@ -218,7 +219,10 @@ extern "C" PetscErrorCode SNESLineSearchCreate_Boltnet(SNESLineSearch ls)
   ls->ops->view           = SNESLineSearchView_Boltnet;
   ls->ops->reset          = nullptr;
   ls->ops->setup          = nullptr;
-  ls->data                = new LineSearchBoltnet();
+  PetscCall(boltnet::Guard(PetscObjectComm((PetscObject)ls), [&] {
+    ls->data = new LineSearchBoltnet();
+    return PetscErrorCode(0);
+  }));
   ls->max_its             = 40;
   PetscCall(PetscObjectComposeFunction((PetscObject)ls, "SNESLineSearchBoltnetSetStateChangeFunction_C", SNESLineSearchBoltnetSetStateChangeFunction_Boltnet));
   PetscFunctionReturn(0);

@@ -1,13 +1,15 @@
 // Joint-state monitoring: per Newton iteration, the joints in each state and how many changed.
 #include "network/assembly.hpp"
+#include "core/guard.hpp"
 
 #include <algorithm>
 #include <sstream>
 
 namespace boltnet {
 
+namespace {
 // Records the state of every local joint at each iterate; prints counts with -joint_monitor.
-PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx)
+PetscErrorCode MonitorJointStatesImpl(SNES snes, PetscInt its, PetscReal fnorm, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
   Vec                   X;
@@ -28,6 +30,13 @@ PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void
   PetscCall(PetscPrintf(a->comm, "  %3" PetscInt_FMT " joints: stick %" PetscInt_FMT " slide %" PetscInt_FMT " contact %" PetscInt_FMT " open %" PetscInt_FMT " linear %" PetscInt_FMT " | changed %" PetscInt_FMT " | ||F|| %g\n", its,
                         glob[static_cast<int>(State::Stick)], glob[static_cast<int>(State::Slide)], glob[static_cast<int>(State::Contact)], glob[static_cast<int>(State::Open)], glob[static_cast<int>(State::Linear)], glob[5], (double)fnorm));
   PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx)
+{
+  return Guard(PetscObjectComm((PetscObject)snes), [&] { return MonitorJointStatesImpl(snes, its, fnorm, ctx); });
 }
 
 // After a failed solve: the joints that changed state most often during it, with their states.
