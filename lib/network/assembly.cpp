@@ -30,12 +30,14 @@ PetscErrorCode GetEdge(DM dm, PetscInt e, EdgeView *ev)
   PetscFunctionReturn(0);
 }
 
-const PatchComp *GetPatch(DM dm, PetscInt v)
+PetscErrorCode GetPatch(DM dm, PetscInt v, const PatchComp **patch)
 {
   PetscInt key, nvar;
-  void    *data = nullptr;
-  if (DMNetworkGetComponent(dm, v, 0, &key, &data, &nvar)) return nullptr;
-  return static_cast<const PatchComp *>(data);
+  void    *data;
+  PetscFunctionBeginUser;
+  PetscCall(DMNetworkGetComponent(dm, v, 0, &key, &data, &nvar));
+  *patch = static_cast<const PatchComp *>(data);
+  PetscFunctionReturn(0);
 }
 
 // Jump in the local frame: du = Q (u_b - u_a), Q = diag(R, R).
@@ -122,8 +124,10 @@ PetscErrorCode CreateJacobian(BoltnetAssembly a)
     PetscInt  goff;
     PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
     if (ghost) continue;
+    const PatchComp *p;
+    PetscCall(GetPatch(a->dm, v, &p));
     PetscCall(DMNetworkGetGlobalVecOffset(a->dm, v, ALL_COMPONENTS, &goff));
-    for (PetscInt i = 0; i < kNodeDof * GetPatch(a->dm, v)->nnodes; ++i) PetscCall(MatSetValue(pre, goff + i, goff + i, 0.0, INSERT_VALUES));
+    for (PetscInt i = 0; i < kNodeDof * p->nnodes; ++i) PetscCall(MatSetValue(pre, goff + i, goff + i, 0.0, INSERT_VALUES));
   }
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -146,7 +150,10 @@ PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
   for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
     PetscBool ghost;
     PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
-    if (!ghost) byId[GetPatch(a->dm, v)->id] = v;
+    if (ghost) continue;
+    const PatchComp *p;
+    PetscCall(GetPatch(a->dm, v, &p));
+    byId[p->id] = v;
   }
   std::map<PetscInt, PetscReal> dir, frc; // global row -> value (later entries override / add)
   for (const BCDesc &bc : a->bcs) {
@@ -279,7 +286,7 @@ PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Resp
 static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
-  Vec                   Xl, Fl;
+  Vec                   Fl;
   const PetscScalar    *x;
   PetscScalar          *f;
   std::vector<Response> resp;
@@ -318,7 +325,6 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   }
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(VecRestoreArray(F, &f));
-  (void)Xl;
   PetscFunctionReturn(0);
 }
 

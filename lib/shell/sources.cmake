@@ -1,0 +1,1 @@
+# Shell element sources (issue 3): target_sources(boltnet PRIVATE ...).

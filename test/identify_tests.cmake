@@ -1,0 +1,1 @@
+# Identification tests (issue 5).

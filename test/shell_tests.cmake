@@ -1,0 +1,1 @@
+# Shell element tests (issue 3).
