@@ -30,6 +30,32 @@ PetscErrorCode GetEdge(DM dm, PetscInt e, EdgeView *ev)
   PetscFunctionReturn(0);
 }
 
+// The edge and the local-vector offsets of its two attachment nodes.
+PetscErrorCode GetEdgeLocal(DM dm, PetscInt e, EdgeView *ev, PetscInt *oa, PetscInt *ob)
+{
+  PetscFunctionBeginUser;
+  PetscCall(GetEdge(dm, e, ev));
+  PetscCall(DMNetworkGetLocalVecOffset(dm, ev->va, ALL_COMPONENTS, oa));
+  PetscCall(DMNetworkGetLocalVecOffset(dm, ev->vb, ALL_COMPONENTS, ob));
+  *oa += kNodeDof * ev->joint->node_a;
+  *ob += kNodeDof * ev->joint->node_b;
+  PetscFunctionReturn(0);
+}
+
+// Global rows of the 12 dof a joint couples: node a's six, then node b's (ghost vertices included).
+PetscErrorCode GetEdgeGlobalRows(DM dm, const EdgeView &ev, PetscInt rows[12])
+{
+  PetscInt ga, gb;
+  PetscFunctionBeginUser;
+  PetscCall(DMNetworkGetGlobalVecOffset(dm, ev.va, ALL_COMPONENTS, &ga));
+  PetscCall(DMNetworkGetGlobalVecOffset(dm, ev.vb, ALL_COMPONENTS, &gb));
+  for (int i = 0; i < kNodeDof; ++i) {
+    rows[i]            = ga + kNodeDof * ev.joint->node_a + i;
+    rows[kNodeDof + i] = gb + kNodeDof * ev.joint->node_b + i;
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode GetPatch(DM dm, PetscInt v, const PatchComp **patch)
 {
   PetscInt key, nvar;
@@ -109,14 +135,9 @@ PetscErrorCode CreateJacobian(BoltnetAssembly a)
   PetscScalar zeros[144] = {0};
   for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
     EdgeView ev;
-    PetscInt ga, gb, rows[12];
+    PetscInt rows[12];
     PetscCall(GetEdge(a->dm, e, &ev));
-    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &ga));
-    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &gb));
-    for (int i = 0; i < kNodeDof; ++i) {
-      rows[i]            = ga + kNodeDof * ev.joint->node_a + i;
-      rows[kNodeDof + i] = gb + kNodeDof * ev.joint->node_b + i;
-    }
+    PetscCall(GetEdgeGlobalRows(a->dm, ev, rows));
     PetscCall(MatSetValues(pre, 12, rows, 12, rows, zeros, INSERT_VALUES));
   }
   for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
@@ -271,10 +292,8 @@ PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Resp
   for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
     EdgeView ev;
     PetscInt oa, ob;
-    PetscCall(GetEdge(a->dm, e, &ev));
-    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &oa));
-    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &ob));
-    const Vec6 du  = LocalJump(ev.joint->R, x + oa + kNodeDof * ev.joint->node_a, x + ob + kNodeDof * ev.joint->node_b);
+    PetscCall(GetEdgeLocal(a->dm, e, &ev, &oa, &ob));
+    const Vec6 du = LocalJump(ev.joint->R, x + oa, x + ob);
     out[e - a->eStart] = evaluate(ev.joint->params, a->committed[e - a->eStart], du, a->tangent);
     if (jumps) (*jumps)[e - a->eStart] = du;
   }
@@ -298,13 +317,11 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
     EdgeView ev;
     PetscInt oa, ob;
-    PetscCall(GetEdge(a->dm, e, &ev));
-    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &oa));
-    PetscCall(DMNetworkGetLocalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &ob));
+    PetscCall(GetEdgeLocal(a->dm, e, &ev, &oa, &ob));
     const Vec6 g = GlobalForce(ev.joint->R, resp[e - a->eStart].force);
     for (int i = 0; i < kNodeDof; ++i) {
-      f[ob + kNodeDof * ev.joint->node_b + i] += g[i];
-      f[oa + kNodeDof * ev.joint->node_a + i] -= g[i];
+      f[ob + i] += g[i];
+      f[oa + i] -= g[i];
     }
   }
   PetscCall(VecRestoreArray(Fl, &f));
@@ -336,18 +353,12 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscCall(AssemblyEvaluateJoints(a, X, resp));
   PetscCall(MatZeroEntries(P));
   for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
-    EdgeView ev;
-    PetscInt ga, gb;
-    PetscCall(GetEdge(a->dm, e, &ev));
-    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.va, ALL_COMPONENTS, &ga));
-    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, ev.vb, ALL_COMPONENTS, &gb));
-    const Mat6  K = GlobalTangent(ev.joint->R, resp[e - a->eStart].tangent);
+    EdgeView    ev;
     PetscInt    rows[12];
     PetscScalar vals[144];
-    for (int i = 0; i < kNodeDof; ++i) {
-      rows[i]            = ga + kNodeDof * ev.joint->node_a + i;
-      rows[kNodeDof + i] = gb + kNodeDof * ev.joint->node_b + i;
-    }
+    PetscCall(GetEdge(a->dm, e, &ev));
+    PetscCall(GetEdgeGlobalRows(a->dm, ev, rows));
+    const Mat6 K = GlobalTangent(ev.joint->R, resp[e - a->eStart].tangent);
     for (int i = 0; i < 12; ++i)
       for (int j = 0; j < 12; ++j) {
         const double sign = ((i < 6) == (j < 6)) ? 1.0 : -1.0;
