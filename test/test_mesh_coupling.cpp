@@ -117,3 +117,57 @@ TEST(Coupling, RigidLinkConstraint)
     EXPECT_NEAR(g, 0.0, 1e-15);
   }
 }
+
+#include "mesh/gmsh.hpp"
+
+#ifndef BOLTNET_TEST_DATA
+#error "BOLTNET_TEST_DATA must name test/data"
+#endif
+
+namespace {
+std::string Data(const char *f) { return std::string(BOLTNET_TEST_DATA) + "/" + f; }
+
+std::string ErrorOf(const std::string &path)
+{
+  try {
+    ReadGmsh(path);
+  } catch (const std::runtime_error &e) {
+    return e.what();
+  }
+  return "";
+}
+} // namespace
+
+// Requirement (issue 3 item 2): physical surface groups of a Gmsh MSH 4.1 file are the parts, with
+// their own node numbering; physical curve groups become node sets of the parts that hold them.
+TEST(Gmsh, PartsAndBoundarySets)
+{
+  const auto parts = ReadGmsh(Data("two-parts.msh"));
+  ASSERT_EQ(parts.size(), 2u);
+  const QuadMesh &skin = parts.at("skin"), &doubler = parts.at("doubler");
+  EXPECT_EQ(skin.x.size(), 6u);
+  EXPECT_EQ(skin.quads.size(), 2u);
+  EXPECT_EQ(doubler.x.size(), 4u);
+  EXPECT_EQ(doubler.quads.size(), 1u);
+  for (int n : doubler.quads[0]) EXPECT_DOUBLE_EQ(doubler.x[n][2], 1.0);
+  ASSERT_TRUE(skin.node_sets.count("clamp"));
+  EXPECT_FALSE(doubler.node_sets.count("clamp"));
+  for (int n : skin.node_sets.at("clamp")) EXPECT_DOUBLE_EQ(skin.x[n][0], 0.0);
+  EXPECT_EQ(skin.node_sets.at("clamp").size(), 2u);
+  // First quad of the skin: nodes (0,0), (1,0), (1,1), (0,1).
+  const auto &q = skin.quads[0];
+  EXPECT_DOUBLE_EQ(skin.x[q[2]][0], 1.0);
+  EXPECT_DOUBLE_EQ(skin.x[q[2]][1], 1.0);
+}
+
+// Requirement (issue 3 item 8): a mesh file that does not exist, is not a mesh, is in another MSH
+// version, or has triangles is rejected with a message naming the file and what is wrong.
+TEST(Gmsh, BadInput)
+{
+  EXPECT_NE(ErrorOf(Data("no-such-file.msh")).find("Cannot read the mesh file"), std::string::npos);
+  EXPECT_NE(ErrorOf(Data("not-a-mesh.msh")).find("is not a Gmsh mesh"), std::string::npos);
+  EXPECT_NE(ErrorOf(Data("msh22.msh")).find("MSH version 2.2 is not supported"), std::string::npos);
+  const std::string tri = ErrorOf(Data("triangles.msh"));
+  EXPECT_NE(tri.find("triangles.msh"), std::string::npos);
+  EXPECT_NE(tri.find("part 'skin' has triangles"), std::string::npos);
+}

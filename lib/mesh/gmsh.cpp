@@ -1,0 +1,182 @@
+#include "mesh/gmsh.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace boltnet {
+namespace {
+
+class Reader {
+public:
+  explicit Reader(const std::string &path) : path_(path), in_(path)
+  {
+    if (!in_) throw std::runtime_error("Cannot read the mesh file '" + path + "'");
+  }
+  // Next non-empty line.
+  std::string line()
+  {
+    std::string s;
+    while (std::getline(in_, s)) {
+      ++lineno_;
+      if (!s.empty() && s.back() == '\r') s.pop_back();
+      if (s.find_first_not_of(" \t") != std::string::npos) return s;
+    }
+    fail("unexpected end of file");
+  }
+  [[noreturn]] void fail(const std::string &what) const
+  {
+    throw std::runtime_error("Mesh file '" + path_ + "' line " + std::to_string(lineno_) + ": " + what);
+  }
+  template <class T>
+  T get(std::istringstream &ss, const char *what)
+  {
+    T v;
+    if (!(ss >> v)) fail(std::string("expected ") + what);
+    return v;
+  }
+  bool eof() { return !in_.good(); }
+  std::string path_;
+
+private:
+  std::ifstream in_;
+  int           lineno_ = 0;
+};
+
+} // namespace
+
+std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
+{
+  Reader                                    r(path);
+  std::map<std::pair<int, int>, std::string> names;          // (dim, physical tag) -> name
+  std::map<std::pair<int, int>, std::vector<int>> physOf;   // (dim, entity tag) -> physical tags
+  std::map<long, std::array<double, 3>>     nodes;           // node tag -> coordinates
+  std::map<std::string, std::vector<std::array<long, 4>>> partQuads;
+  std::map<std::string, std::set<long>>     groupNodes;      // every physical group -> node tags
+  bool                                      format = false;
+
+  std::string s;
+  while (true) {
+    try {
+      s = r.line();
+    } catch (const std::runtime_error &) {
+      break; // end of file between sections
+    }
+    if (s == "$MeshFormat") {
+      std::istringstream ss(r.line());
+      const std::string  version = r.get<std::string>(ss, "a version");
+      const int          binary  = r.get<int>(ss, "the file type");
+      if (version.rfind("4.1", 0) != 0) r.fail("MSH version " + version + " is not supported: save as MSH 4.1 (Gmsh 4 default)");
+      if (binary != 0) r.fail("binary MSH is not supported: save as ASCII");
+      format = true;
+    } else if (s == "$PhysicalNames") {
+      std::istringstream ss(r.line());
+      const int          n = r.get<int>(ss, "the number of physical names");
+      for (int i = 0; i < n; ++i) {
+        std::istringstream ls(r.line());
+        const int          dim = r.get<int>(ls, "a dimension"), tag = r.get<int>(ls, "a physical tag");
+        std::string        rest;
+        std::getline(ls, rest);
+        const size_t a = rest.find('"'), b = rest.rfind('"');
+        if (a == std::string::npos || b == a) r.fail("expected a quoted physical name");
+        names[{dim, tag}] = rest.substr(a + 1, b - a - 1);
+      }
+    } else if (s == "$Entities") {
+      std::istringstream ss(r.line());
+      int                count[4];
+      for (int &c : count) c = r.get<int>(ss, "entity counts");
+      for (int dim = 0; dim < 4; ++dim)
+        for (int i = 0; i < count[dim]; ++i) {
+          std::istringstream ls(r.line());
+          const int          tag = r.get<int>(ls, "an entity tag");
+          for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) r.get<double>(ls, "a bounding box");
+          const int nphys = r.get<int>(ls, "the number of physical tags");
+          for (int k = 0; k < nphys; ++k) physOf[{dim, tag}].push_back(std::abs(r.get<int>(ls, "a physical tag")));
+        }
+    } else if (s == "$Nodes") {
+      if (!format) r.fail("$Nodes before $MeshFormat: not an MSH file");
+      std::istringstream ss(r.line());
+      const long         blocks = r.get<long>(ss, "the number of node blocks");
+      for (long b = 0; b < blocks; ++b) {
+        std::istringstream hs(r.line());
+        const int          dim = r.get<int>(hs, "an entity dimension"), tag = r.get<int>(hs, "an entity tag");
+        const int          param = r.get<int>(hs, "the parametric flag");
+        const long         n     = r.get<long>(hs, "the number of nodes in the block");
+        std::vector<long>  tags(n);
+        for (long i = 0; i < n; ++i) {
+          std::istringstream ls(r.line());
+          tags[i] = r.get<long>(ls, "a node tag");
+        }
+        for (long i = 0; i < n; ++i) {
+          std::istringstream ls(r.line());
+          std::array<double, 3> x;
+          for (double &c : x) c = r.get<double>(ls, "node coordinates");
+          nodes[tags[i]] = x;
+          (void)param;
+        }
+        for (int ph : physOf[{dim, tag}]) groupNodes[names.count({dim, ph}) ? names[{dim, ph}] : std::to_string(ph)].insert(tags.begin(), tags.end());
+      }
+    } else if (s == "$Elements") {
+      if (!format) r.fail("$Elements before $MeshFormat: not an MSH file");
+      std::istringstream ss(r.line());
+      const long         blocks = r.get<long>(ss, "the number of element blocks");
+      for (long b = 0; b < blocks; ++b) {
+        std::istringstream hs(r.line());
+        const int          dim = r.get<int>(hs, "an entity dimension"), tag = r.get<int>(hs, "an entity tag");
+        const int          type = r.get<int>(hs, "an element type");
+        const long         n    = r.get<long>(hs, "the number of elements in the block");
+        const int          nn   = type == 1 ? 2 : type == 2 ? 3 : type == 3 ? 4 : type == 15 ? 1 : -1;
+        if (nn < 0) r.fail("element type " + std::to_string(type) + " is not supported (4-node quadrangles, lines, points)");
+        std::vector<std::string> groups;
+        for (int ph : physOf[{dim, tag}]) groups.push_back(names.count({dim, ph}) ? names[{dim, ph}] : std::to_string(ph));
+        for (long i = 0; i < n; ++i) {
+          std::istringstream ls(r.line());
+          r.get<long>(ls, "an element tag");
+          std::array<long, 4> q{};
+          for (int k = 0; k < nn; ++k) q[k] = r.get<long>(ls, "element nodes");
+          for (const std::string &g : groups) {
+            for (int k = 0; k < nn; ++k) groupNodes[g].insert(q[k]);
+            if (dim != 2) continue;
+            if (type != 3) r.fail("part '" + g + "' has triangles: boltnet's shell is a 4-node quadrangle (mesh with Recombine)");
+            partQuads[g].push_back(q);
+          }
+        }
+      }
+    }
+  }
+  if (!format) throw std::runtime_error("Mesh file '" + path + "' is not a Gmsh mesh (no $MeshFormat section)");
+  if (partQuads.empty()) throw std::runtime_error("Mesh file '" + path + "' has no physical surface of quadrangles: name each part with a physical surface group");
+
+  std::map<std::string, QuadMesh> parts;
+  for (auto &[name, quads] : partQuads) {
+    QuadMesh            &m = parts[name];
+    std::map<long, int> local;
+    for (auto &q : quads) {
+      std::array<int, 4> e;
+      for (int k = 0; k < 4; ++k) {
+        auto it = local.find(q[k]);
+        if (it == local.end()) {
+          auto xn = nodes.find(q[k]);
+          if (xn == nodes.end()) throw std::runtime_error("Mesh file '" + path + "': part '" + name + "' uses node " + std::to_string(q[k]) + " which is not in $Nodes");
+          it = local.emplace(q[k], static_cast<int>(m.x.size())).first;
+          m.x.push_back(xn->second);
+        }
+        e[k] = it->second;
+      }
+      m.quads.push_back(e);
+    }
+    for (auto &[g, tags] : groupNodes) {
+      if (g == name) continue;
+      std::vector<int> set;
+      for (long t : tags) {
+        auto it = local.find(t);
+        if (it != local.end()) set.push_back(it->second);
+      }
+      if (!set.empty()) m.node_sets[g] = set;
+    }
+  }
+  return parts;
+}
+
+} // namespace boltnet

@@ -1,0 +1,18 @@
+// Reader of Gmsh meshes (MSH 4.1 ASCII, what Gmsh 4 writes by default): each physical surface group
+// is a part (a QuadMesh); physical point, curve and surface groups become node sets of every part
+// that holds their nodes.
+#pragma once
+
+#include "mesh/mesh.hpp"
+
+#include <map>
+#include <string>
+
+namespace boltnet {
+
+// Throws std::runtime_error with a message naming the file (and the line where it applies) for a
+// missing file, a file that is not an MSH 4.1 ASCII mesh, or elements other than 4-node quadrangles
+// in a part.
+std::map<std::string, QuadMesh> ReadGmsh(const std::string &path);
+
+} // namespace boltnet
