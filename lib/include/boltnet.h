@@ -59,6 +59,17 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblySetOptionsPrefix(BoltnetAssembly, con
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddRigidPatch(BoltnetAssembly, PetscInt id, const PetscReal x[3]);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *, const PetscReal normal[3], const PetscReal t1[3]);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly, PetscInt patch, PetscInt dof, BoltnetBCKind, PetscReal value);
+/* Shell patches (issue 3): a quadrilateral mesh (nnodes coordinates xyz[3*i+k], nquads
+   counter-clockwise quads[4*e+k], node numbers from 0) of an isotropic shell (E, nu, thickness t).
+   Joints attach to a shell patch at their position, through the nodes of their footprint
+   (-coupling_radius) tied rigidly to a joint node (-coupling_penalty). */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t);
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[]);
+/* A boundary condition on a node set of a shell patch (NULL or "": all its nodes); a force value is
+   the total on the set, shared equally by its nodes. */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBCOnSet(BoltnetAssembly, PetscInt patch, const char set[], PetscInt dof, BoltnetBCKind, PetscReal value);
+/* A joint with a position (needed where it joins a shell patch). */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddJointAt(BoltnetAssembly, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3]);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblySetUp(BoltnetAssembly);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetDM(BoltnetAssembly, DM *);

@@ -1,5 +1,6 @@
 // The public assembly API of boltnet.h: description, options, set-up, results.
 #include "network/assembly.hpp"
+#include "core/guard.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -89,6 +90,13 @@ PetscErrorCode BoltnetAssemblyAddRigidPatch(BoltnetAssembly a, PetscInt id, cons
 PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *bp, const PetscReal normal[3], const PetscReal t1[3])
 {
   PetscFunctionBeginUser;
+  PetscCall(BoltnetAssemblyAddJointAt(a, id, patch_a, patch_b, bp, normal, t1, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddJointAt(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *bp, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3])
+{
+  PetscFunctionBeginUser;
   PetscCall(CheckNotSetUp(a));
   PetscCheck(bp, a->comm, PETSC_ERR_ARG_NULL, "Joint %" PetscInt_FMT ": null parameters", id);
   JointComp j{};
@@ -96,7 +104,8 @@ PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly a, PetscInt id, PetscInt 
   j.index   = (PetscInt)a->joints.size();
   j.patch_a = patch_a;
   j.patch_b = patch_b;
-  j.node_a = j.node_b = 0; // rigid patches: their single node
+  j.node_a = j.node_b = 0; // rigid patches: their single node; shell patches: set at set-up
+  for (int k = 0; k < 3; ++k) j.x[k] = x ? x[k] : 0.0;
   Params &p           = j.params;
   PetscCheck(bp->law >= BOLTNET_LAW_SPRING && bp->law <= BOLTNET_LAW_FRICTION, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": unknown law %d", id, (int)bp->law);
   p.law            = static_cast<Law>(bp->law);
@@ -127,7 +136,69 @@ PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly a, PetscInt patch, PetscInt 
   PetscCheck(dof >= -1 && dof < 6, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": dof %" PetscInt_FMT " is not in 0..5 (ux uy uz rx ry rz) or -1 (all)", patch, dof);
   PetscCheck(kind >= BOLTNET_BC_FIXED && kind <= BOLTNET_BC_FORCE, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": unknown kind %d", patch, (int)kind);
   PetscCheck(std::isfinite(value), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": value is not finite", patch);
-  a->bcs.push_back(BCDesc{patch, dof, kind, value});
+  a->bcs.push_back(BCDesc{patch, "", dof, kind, value});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  ShellPatch sp;
+  sp.id = id;
+  for (PetscInt i = 0; i < nnodes; ++i) sp.mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+  for (PetscInt e = 0; e < nquads; ++e) {
+    std::array<int, 4> q;
+    for (int k = 0; k < 4; ++k) {
+      PetscCheck(quads[4 * e + k] >= 0 && quads[4 * e + k] < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": quadrangle %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT, id, e, quads[4 * e + k], nnodes - 1);
+      q[k] = (int)quads[4 * e + k];
+    }
+    sp.mesh.quads.push_back(q);
+  }
+  PetscCall(Guard(a->comm, [&] {
+    sp.material = shell::IsotropicMaterial(E, nu, t);
+    return PetscErrorCode(0);
+  }));
+  PatchComp p{};
+  p.id     = id;
+  p.index  = (PetscInt)a->patches.size();
+  p.kind   = static_cast<PetscInt>(PatchKind::Shell);
+  p.nnodes = nnodes;
+  p.x[0] = sp.mesh.x[0][0], p.x[1] = sp.mesh.x[0][1], p.x[2] = sp.mesh.x[0][2];
+  a->shells[p.index] = std::move(sp);
+  a->patches.push_back(p);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly a, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  ShellPatch *sp = nullptr;
+  for (auto &kv : a->shells)
+    if (kv.second.id == patch) sp = &kv.second;
+  PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
+  std::vector<int> &set = sp->mesh.node_sets[name];
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscCheck(nodes[i] >= 0 && nodes[i] < (PetscInt)sp->mesh.x.size(), a->comm, PETSC_ERR_USER_INPUT, "Node set '%s' of patch %" PetscInt_FMT ": node %" PetscInt_FMT " does not exist", name, patch, nodes[i]);
+    set.push_back((int)nodes[i]);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddBCOnSet(BoltnetAssembly a, PetscInt patch, const char set[], PetscInt dof, BoltnetBCKind kind, PetscReal value)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BoltnetAssemblyAddBC(a, patch, dof, kind, value));
+  if (set && set[0]) {
+    const ShellPatch *sp = nullptr;
+    for (auto &kv : a->shells)
+      if (kv.second.id == patch) sp = &kv.second;
+    PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on set '%s': patch %" PetscInt_FMT " is not a shell patch", set, patch);
+    PetscCheck(sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
+    a->bcs.back().set = set;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -139,8 +210,12 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet solver options", "boltnet");
   PetscCall(PetscOptionsEList("-joint_tangent", "Joint tangent in the Jacobian: the paper's state-switched one or the consistent one", "BoltnetAssemblySetFromOptions", tangents, 2, tangents[t], &t, nullptr));
   PetscCall(PetscOptionsInt("-load_max_cuts", "Step cut-backs (halvings) allowed per load step before the solve stops", "BoltnetAssemblySolveLoadPath", a->max_cuts, &a->max_cuts, nullptr));
+  PetscCall(PetscOptionsReal("-coupling_radius", "Footprint radius of a fastener on a shell patch (mm): nodes within it follow the joint node rigidly", "BoltnetAssemblySetFromOptions", a->coupling_radius, &a->coupling_radius, nullptr));
+  PetscCall(PetscOptionsReal("-coupling_penalty", "Penalty of the rigid footprint links, as a multiple of the shell's membrane stiffness A11 (N/mm)", "BoltnetAssemblySetFromOptions", a->coupling_penalty, &a->coupling_penalty, nullptr));
   PetscCall(PetscOptionsBool("-joint_monitor", "Print, per Newton iteration, the joints in each state and how many changed (summed over ranks)", "BoltnetAssemblySetFromOptions", a->monitor_states, &a->monitor_states, nullptr));
   PetscOptionsEnd();
+  PetscCheck(a->coupling_radius > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_radius %g must be > 0", (double)a->coupling_radius);
+  PetscCheck(a->coupling_penalty > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_penalty %g must be > 0", (double)a->coupling_penalty);
   PetscCheck(a->max_cuts >= 0 && a->max_cuts <= 60, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cuts %" PetscInt_FMT " must lie in [0, 60]", a->max_cuts);
   a->tangent               = static_cast<Tangent>(t);
   a->setfromoptions_called = PETSC_TRUE;

@@ -1,6 +1,7 @@
 // DMNetwork assembly: patches are vertices, joints are edges (docs/architecture.md).
 #include "network/assembly.hpp"
 #include "core/guard.hpp"
+#include "mesh/mesh.hpp"
 
 #include <algorithm>
 #include <map>
@@ -149,6 +150,17 @@ PetscErrorCode CreateJacobian(BoltnetAssembly a)
     PetscCall(GetPatch(a->dm, v, &p));
     PetscCall(DMNetworkGetGlobalVecOffset(a->dm, v, ALL_COMPONENTS, &goff));
     for (PetscInt i = 0; i < kNodeDof * p->nnodes; ++i) PetscCall(MatSetValue(pre, goff + i, goff + i, 0.0, INSERT_VALUES));
+    auto op = a->ops.find(v);
+    if (op == a->ops.end()) continue;
+    std::vector<PetscInt> cols;
+    std::vector<PetscScalar> z;
+    for (PetscInt r = 0; r < op->second.n; ++r) {
+      const PetscInt row = goff + r, b = op->second.rowptr[r], e = op->second.rowptr[r + 1];
+      cols.resize(e - b);
+      z.assign(e - b, 0.0);
+      for (PetscInt k = b; k < e; ++k) cols[k - b] = goff + op->second.cols[k];
+      PetscCall(MatSetValues(pre, 1, &row, e - b, cols.data(), z.data(), INSERT_VALUES));
+    }
   }
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -180,13 +192,26 @@ PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
   for (const BCDesc &bc : a->bcs) {
     auto it = byId.find(bc.patch);
     if (it == byId.end()) continue; // not owned here
-    PetscInt goff;
+    const PatchComp *p;
+    PetscInt         goff;
+    PetscCall(GetPatch(a->dm, it->second, &p));
     PetscCall(DMNetworkGetGlobalVecOffset(a->dm, it->second, ALL_COMPONENTS, &goff));
-    for (PetscInt d = 0; d < kNodeDof; ++d) {
-      if (bc.dof >= 0 && d != bc.dof) continue;
-      if (bc.kind == BOLTNET_BC_FORCE) frc[goff + d] += bc.value;
-      else dir[goff + d] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
+    // The nodes: a rigid patch's node; a shell patch's named set, or all its mesh nodes.
+    std::vector<int> nodes = {0};
+    if (p->kind == static_cast<PetscInt>(PatchKind::Shell)) {
+      const QuadMesh &m = a->shells.at(p->index).mesh;
+      if (bc.set.empty()) {
+        nodes.resize(m.x.size());
+        for (size_t n = 0; n < nodes.size(); ++n) nodes[n] = (int)n;
+      } else nodes = m.node_sets.at(bc.set); // checked when the BC was added
     }
+    for (int n : nodes)
+      for (PetscInt d = 0; d < kNodeDof; ++d) {
+        if (bc.dof >= 0 && d != bc.dof) continue;
+        const PetscInt row = goff + kNodeDof * n + d;
+        if (bc.kind == BOLTNET_BC_FORCE) frc[row] += bc.value / (PetscReal)nodes.size();
+        else dir[row] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
+      }
   }
   for (auto &kv : dir) {
     a->dirichlet_rows.push_back(kv.first);
@@ -236,6 +261,23 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
     PetscCheck(degree[i] > 0, a->comm, PETSC_ERR_USER_INPUT, "Patch %" PetscInt_FMT " is not joined to anything: every patch needs at least one joint", a->patches[i].id);
   for (const BCDesc &bc : a->bcs)
     PetscCheck(index.count(bc.patch), a->comm, PETSC_ERR_USER_INPUT, "A boundary condition names patch %" PetscInt_FMT " which does not exist", bc.patch);
+  // Joints on shell patches attach to a joint node of their own, tied to the footprint nodes.
+  for (JointComp &j : a->joints)
+    for (int side = 0; side < 2; ++side) {
+      const PetscInt pid  = side ? j.patch_b : j.patch_a;
+      PetscInt      &node = side ? j.node_b : j.node_a;
+      auto           sh   = a->shells.find(index[pid]);
+      node                = 0;
+      if (sh == a->shells.end()) continue;
+      ShellPatch::JointNode jn;
+      jn.x         = {j.x[0], j.x[1], j.x[2]};
+      jn.axis      = {j.R[0], j.R[1], j.R[2]};
+      jn.footprint = Footprint(sh->second.mesh, jn.x, jn.axis, a->coupling_radius);
+      PetscCheck(!jn.footprint.empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " at (%g, %g, %g) mm: no node of patch %" PetscInt_FMT " lies within the footprint radius %g mm (-coupling_radius): the joint is outside the part", j.id, (double)j.x[0], (double)j.x[1], (double)j.x[2], pid, (double)a->coupling_radius);
+      node = sh->second.nnodes();
+      sh->second.joint_nodes.push_back(jn);
+    }
+  for (auto &kv : a->shells) a->patches[kv.first].nnodes = kv.second.nnodes();
 
   PetscCall(DMNetworkCreate(a->comm, &a->dm));
   PetscCall(DMNetworkSetNumSubNetworks(a->dm, PETSC_DECIDE, 1));
@@ -267,6 +309,18 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   PetscCall(DMNetworkGetVertexRange(a->dm, &a->vStart, &a->vEnd));
   PetscCall(DMNetworkGetEdgeRange(a->dm, &a->eStart, &a->eEnd));
   a->committed.assign(a->eEnd - a->eStart, History{});
+  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
+    PetscBool        ghost;
+    const PatchComp *p;
+    PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
+    PetscCall(GetPatch(a->dm, v, &p));
+    if (ghost || p->kind != static_cast<PetscInt>(PatchKind::Shell)) continue;
+    const ShellPatch &sp = a->shells.at(p->index);
+    PetscCall(Guard(a->comm, [&] {
+      a->ops[v] = BuildShellOperator(sp, a->coupling_penalty * sp.material.A[0], a->coupling_radius);
+      return PetscErrorCode(0);
+    }));
+  }
 
   PetscCall(DMCreateGlobalVector(a->dm, &a->X));
   PetscCall(VecGetSize(a->X, &a->ndof_global));
@@ -324,6 +378,25 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
       f[oa + i] -= g[i];
     }
   }
+  if (!a->ops.empty()) { // the shell patches' linear forces K u
+    Vec                Xl;
+    const PetscScalar *xl;
+    PetscCall(DMGetLocalVector(a->dm, &Xl));
+    PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
+    PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
+    PetscCall(VecGetArrayRead(Xl, &xl));
+    for (const auto &[v, op] : a->ops) {
+      PetscInt o;
+      PetscCall(DMNetworkGetLocalVecOffset(a->dm, v, ALL_COMPONENTS, &o));
+      for (PetscInt r = 0; r < op.n; ++r) {
+        PetscScalar sum = 0;
+        for (PetscInt k = op.rowptr[r]; k < op.rowptr[r + 1]; ++k) sum += op.vals[k] * xl[o + op.cols[k]];
+        f[o + r] += sum;
+      }
+    }
+    PetscCall(VecRestoreArrayRead(Xl, &xl));
+    PetscCall(DMRestoreLocalVector(a->dm, &Xl));
+  }
   PetscCall(VecRestoreArray(Fl, &f));
   PetscCall(VecSet(F, 0.0));
   PetscCall(DMLocalToGlobalBegin(a->dm, Fl, ADD_VALUES, F));
@@ -366,9 +439,21 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
       }
     PetscCall(MatSetValues(P, 12, rows, 12, rows, vals, ADD_VALUES));
   }
+  for (const auto &[v, op] : a->ops) { // the shell patches' stiffness
+    PetscInt              goff;
+    std::vector<PetscInt> cols;
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, v, ALL_COMPONENTS, &goff));
+    for (PetscInt r = 0; r < op.n; ++r) {
+      const PetscInt row = goff + r, b = op.rowptr[r], e = op.rowptr[r + 1];
+      cols.resize(e - b);
+      for (PetscInt k = b; k < e; ++k) cols[k - b] = goff + op.cols[k];
+      PetscCall(MatSetValues(P, 1, &row, e - b, cols.data(), op.vals.data() + b, ADD_VALUES));
+    }
+  }
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatZeroRows(P, (PetscInt)a->dirichlet_rows.size(), a->dirichlet_rows.data(), 1.0, nullptr, nullptr));
+  PetscCall(MatNorm(P, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));

@@ -5,6 +5,9 @@
 #include "boltnet.h"
 #include "core/compat.h"
 #include "joint/law.hpp"
+#include "network/patch.hpp"
+
+#include <map>
 
 #include <functional>
 #include <string>
@@ -13,7 +16,7 @@
 namespace boltnet {
 
 // Patch kinds. A rigid patch is one 6-dof node; shell patches (issue 3) add nodes and a stiffness.
-enum class PatchKind : PetscInt { Rigid = 0 };
+enum class PatchKind : PetscInt { Rigid = 0, Shell = 1 };
 
 // Vertex component: plain data, copied as raw bytes by DMNetworkDistribute.
 struct PatchComp {
@@ -29,6 +32,7 @@ struct JointComp {
   PetscInt  id;     // user id
   PetscInt  index;  // position in the description (0..njoints-1)
   PetscInt  patch_a, patch_b; // user ids of the two patches
+  PetscReal x[3];             // position of the fastener (where shell patches attach it)
   PetscInt  node_a; // attachment node inside patch a
   PetscInt  node_b; // attachment node inside patch b
   PetscReal R[9];
@@ -37,9 +41,10 @@ struct JointComp {
 
 struct BCDesc {
   PetscInt      patch; // user id
+  std::string   set;   // node set of a shell patch ("" : every node of the patch)
   PetscInt      dof;   // 0..5, or -1 for all six
   BoltnetBCKind kind;
-  PetscReal     value; // per unit load factor (fixed: ignored)
+  PetscReal     value; // per unit load factor (fixed: ignored); a force is the set's total
 };
 
 // One row of results for one joint at one converged step (gathered to rank 0 for output).
@@ -71,6 +76,13 @@ struct _p_BoltnetAssembly {
   std::vector<boltnet::PatchComp> patches;
   std::vector<boltnet::JointComp> joints;
   std::vector<boltnet::BCDesc>    bcs;
+  std::map<PetscInt, boltnet::ShellPatch> shells; // shell patches by position in `patches`
+
+  // Patch coupling: footprint radius (mm) and penalty factor (link stiffness = factor * A11).
+  PetscReal coupling_radius  = 4.0;
+  PetscReal coupling_penalty = 1e3;
+  // Stiffness of the owned shell patches, by vertex point, built after distribution.
+  std::map<PetscInt, boltnet::PatchOperator> ops;
 
   // Options.
   boltnet::Tangent tangent        = boltnet::Tangent::Consistent; // docs/solver.md: why
@@ -96,6 +108,7 @@ struct _p_BoltnetAssembly {
   // for naming the joints that kept changing state when a step fails.
   std::vector<std::vector<PetscInt>> state_trace;
   PetscBool                          user_atol = PETSC_FALSE; // -snes_atol given: keep it
+  PetscReal                          jnorm     = 0;           // ||J||_inf of the last Jacobian
 
   // Boundary conditions on owned rows (global indices).
   std::vector<PetscInt>  dirichlet_rows;

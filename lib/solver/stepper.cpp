@@ -7,6 +7,9 @@
 #include <sstream>
 
 namespace boltnet {
+namespace {
+PetscErrorCode ConvergedToRoundoff(SNES, PetscInt, PetscReal, PetscReal, PetscReal, SNESConvergedReason *, void *);
+}
 
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
 {
@@ -30,6 +33,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  PetscCall(SNESSetConvergenceTest(a->snes, ConvergedToRoundoff, a, nullptr));
   PetscCall(SNESSetFromOptions(a->snes));
   PetscCall(SNESLineSearchBoltnetSetStateChangeFunction(ls, AssemblyCountStateChanges, a));
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-snes_atol", &a->user_atol));
@@ -37,6 +41,27 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
 }
 
 namespace {
+
+// SNES's default test, plus: converged when ||F|| is at the round-off of evaluating it. The forces
+// K u are sums of terms up to ||J||_inf ||x||_inf, computed with relative error about machine
+// epsilon; below 100 eps ||J|| ||x|| the residual cannot decrease any more (stiff patch couplings
+// reach that floor before -snes_rtol), and the line search would report a failure.
+PetscErrorCode ConvergedToRoundoff(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  BoltnetAssembly a = static_cast<BoltnetAssembly>(ctx);
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, nullptr));
+  if (*reason != SNES_CONVERGED_ITERATING || it == 0) PetscFunctionReturn(0);
+  Vec       X;
+  PetscReal xinf;
+  PetscCall(SNESGetSolution(snes, &X));
+  PetscCall(VecNorm(X, NORM_INFINITY, &xinf));
+  if (fnorm <= 100.0 * PETSC_MACHINE_EPSILON * a->jnorm * xinf) {
+    PetscCall(PetscInfo(snes, "Converged to round-off: ||F|| %g <= 100 eps ||J|| ||x|| = %g\n", (double)fnorm, (double)(100.0 * PETSC_MACHINE_EPSILON * a->jnorm * xinf)));
+    *reason = SNES_CONVERGED_FNORM_ABS;
+  }
+  PetscFunctionReturn(0);
+}
 
 // Absolute tolerance for one step: round-off relative to the forces at play, so that a step whose
 // initial residual is already tiny (nothing changes) still converges.

@@ -1,0 +1,99 @@
+// boltnet shell element kernels (issue 3): pure C++, no PETSc, no global state.
+//
+// A four-node shell with 6 dof per node (u_x, u_y, u_z, theta_x, theta_y, theta_z in global axes):
+// flat-facet MITC4 (Dvorkin-Bathe assumed transverse shear, bilinear membrane and bending) in the
+// mean plane of the four nodes, rigid offsets from the mean plane to the nodes for warped elements,
+// a Hughes-Brezzi drilling term, and resultant constitutive law N, M, Q = [A B; B D], H. See
+// docs/shell.md for the formulation, the sign conventions and the verification.
+//
+// Conventions (local element frame e1, e2, e3; z along e3, measured from the mid-surface):
+//   displacement through the thickness u(z) = u + z theta x e3, i.e. u_x(z) = u + z theta_y,
+//   u_y(z) = v - z theta_x;
+//   membrane strain  eps = (du/dx, dv/dy, du/dy + dv/dx)                    (engineering shear)
+//   curvature        kappa = (dtheta_y/dx, -dtheta_x/dy, dtheta_y/dy - dtheta_x/dx)
+//   transverse shear gamma = (dw/dx + theta_y, dw/dy - theta_x)
+//   resultants       N = A eps + B kappa, M = B eps + D kappa, Q = H gamma
+//   so that the strain at height z is eps + z kappa.
+// Element node order: counter-clockwise about the intended normal, natural coordinates
+// (xi, eta) = (-1,-1), (1,-1), (1,1), (-1,1). The element normal is e3 = X_xi x X_eta at the centre.
+//
+// Errors (bad material data, a degenerate element) throw std::invalid_argument with a message naming
+// the input; callers inside PETSc callbacks turn them into PETSc errors (lib/core/guard.hpp).
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace boltnet::shell {
+
+using Vec3 = std::array<double, 3>;
+using Nodes = std::array<Vec3, 4>;   // the four node positions, global coordinates
+using Mat3 = std::array<double, 9>;  // 3x3, row-major, Voigt order (xx, yy, xy)
+using Mat2 = std::array<double, 4>;  // 2x2, row-major, order (xz, yz)
+using ElementMatrix = std::array<double, 576>; // 24x24, row-major, dof 6*node + component
+using ElementVector = std::array<double, 24>;
+
+/* One ply of a laminate: fibre angle (degrees, about the shell normal, from the material reference
+   direction), thickness, and the orthotropic ply moduli in the ply axes (1 = fibre). */
+struct Ply {
+  double angle_deg, thickness, E1, E2, nu12, G12, G13, G23;
+};
+
+/* Shell section: stress resultants per unit length against generalised strains, in the material
+   frame (x axis = the material reference direction projected on the element plane). */
+struct ShellMaterial {
+  Mat3 A{}, B{}, D{}; // membrane, coupling, bending stiffness
+  Mat2 H{};           // transverse shear stiffness (shear correction included)
+  double thickness = 0;
+  Vec3 direction{1, 0, 0}; // material reference direction (global); projected on each element
+};
+
+/* Isotropic shell: A = E t / (1 - nu^2) [..], D = E t^3 / (12 (1 - nu^2)) [..], B = 0,
+   H = 5/6 G t I. Throws on E <= 0, t <= 0 or nu outside (-1, 0.5]. */
+ShellMaterial IsotropicMaterial(double E, double nu, double t);
+
+/* Laminate by classical lamination theory; plies listed from the bottom (z = -h/2, h the total
+   thickness) to the top. H = k sum_k Qs_k t_k with the shear correction factor k (5/6 default).
+   Throws, naming the ply and the value, on no plies or a non-positive thickness or modulus. */
+ShellMaterial LaminateMaterial(const std::vector<Ply> &plies, double shear_correction = 5.0 / 6.0);
+
+/* The same section seen in axes rotated by phi (radians) about the normal: if the material x axis
+   lies at angle phi from the new x axis, returns A' = T^T A T (likewise B, D; H' = S^T H S), with
+   T the engineering-strain rotation by phi. */
+ShellMaterial RotateMaterial(const ShellMaterial &m, double phi);
+
+/* The element frame: centre (mean of the nodes), e1 along X_xi, e3 = unit(X_xi x X_eta) at the centre,
+   e2 = e3 x e1; node coordinates x, y in the mean plane and offsets h along e3 (warping). */
+struct ElementFrame {
+  Vec3 centre, e1, e2, e3;
+  std::array<double, 4> x, y, h;
+};
+ElementFrame MakeElementFrame(const Nodes &X);
+
+/* Default drilling factor: the drilling penalty is gamma = drill * G_m, with G_m the invariant
+   membrane shear stiffness (A11 + A22 - 2 A12 + 4 A66) / 8 (= G t for an isotropic shell). */
+constexpr double kDefaultDrill = 1e-3;
+
+/* 24x24 element stiffness in global coordinates, dof order (u_x, u_y, u_z, th_x, th_y, th_z) per
+   node. drill >= 0 scales the Hughes-Brezzi drilling term (kDefaultDrill recommended). */
+void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, ElementMatrix &K);
+
+/* Consistent nodal forces for a force per unit area q (global vector: self weight, a distributed
+   load), integrated over the bilinear surface. Rotation entries are zero. */
+void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F);
+
+/* Consistent nodal forces for a pressure p acting along +n, n the unit normal of the bilinear surface
+   oriented like e3 (n dA = X_xi x X_eta dxi deta). */
+void ElementPressure(const Nodes &X, double p, ElementVector &F);
+
+/* Generalised strains at (xi, eta) in the element frame (e1, e2) from global nodal displacements:
+   membrane strain, curvature, MITC4 transverse shear, and the drilling defect theta_z - omega
+   (omega = (dv/dx - du/dy) / 2). */
+struct GeneralisedStrains {
+  std::array<double, 3> membrane, curvature;
+  std::array<double, 2> shear;
+  double drill;
+};
+GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double xi, double eta);
+
+} // namespace boltnet::shell
