@@ -1,6 +1,8 @@
 // Scenes: a PETSc YAML options file (every parameter is an option) plus CSV tables for the
 // structured lists (patches, joints, boundary conditions) that options cannot hold.
 #include "io/io.hpp"
+#include "core/guard.hpp"
+#include "mesh/gmsh.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -71,6 +73,13 @@ PetscErrorCode Cell(MPI_Comm comm, const Table &t, size_t row, const std::string
   SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s: missing column '%s'", t.path.c_str(), col.c_str());
 }
 
+bool HasColumn(const Table &t, const std::string &col)
+{
+  for (const std::string &h : t.header)
+    if (h == col) return true;
+  return false;
+}
+
 PetscErrorCode RealCell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, PetscReal *x)
 {
   std::string v;
@@ -137,6 +146,28 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, Bolt
   PetscFunctionReturn(0);
 }
 
+// An isotropic shell section from -material_<name>_E, _nu, _t.
+PetscErrorCode MaterialFromOptions(MPI_Comm comm, const std::string &name, shell::ShellMaterial *mat)
+{
+  PetscReal         E = 0, nu = 0.3, t = 0;
+  const std::string prefix = "material_" + name + "_";
+  const std::string title  = "Material '" + name + "' (isotropic shell section; units: MPa, mm)";
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
+  PetscCall(PetscOptionsReal("-E", "Young's modulus (MPa)", "", E, &E, nullptr));
+  PetscCall(PetscOptionsReal("-nu", "Poisson's ratio", "", nu, &nu, nullptr));
+  PetscCall(PetscOptionsReal("-t", "Shell thickness (mm)", "", t, &t, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(E > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%sE = %g must be > 0", name.c_str(), prefix.c_str(), (double)E);
+  PetscCheck(t > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%st = %g must be > 0", name.c_str(), prefix.c_str(), (double)t);
+  PetscCheck(nu > -1 && nu < 0.5, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%snu = %g must lie in (-1, 0.5)", name.c_str(), prefix.c_str(), (double)nu);
+  PetscCall(Guard(comm, [&] {
+    *mat = shell::IsotropicMaterial(E, nu, t);
+    return PetscErrorCode(0);
+  }));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text)
@@ -198,9 +229,9 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
   PetscCall(PetscStrncpy(name, scene->name.c_str(), sizeof(name)));
   PetscOptionsBegin(comm, nullptr, "boltnet scene", "boltnet");
   PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
-  PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z (kind: rigid)", "", fp, fp, sizeof(fp), nullptr));
-  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z (n bolt axis, t1 first in-plane direction)", "", fj, fj, sizeof(fj), nullptr));
-  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N)", "", fb, fb, sizeof(fb), nullptr));
+  PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,mesh,part,material] (kind rigid, plate or gmsh)", "", fp, fp, sizeof(fp), nullptr));
+  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z] (n bolt axis, t1 first in-plane direction, x position)", "", fj, fj, sizeof(fj), nullptr));
+  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set] (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N; set: a shell patch's node set)", "", fb, fb, sizeof(fb), nullptr));
   PetscOptionsEnd();
   scene->name = name;
   PetscCheck(fp[0] && fj[0] && fb[0], comm, PETSC_ERR_USER_INPUT, "The scene must name its tables: -scene_patches, -scene_joints and -scene_bcs (missing: %s%s%s)", fp[0] ? "" : "-scene_patches ", fj[0] ? "" : "-scene_joints ", fb[0] ? "" : "-scene_bcs");
@@ -222,11 +253,46 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
     std::string kind;
     PetscCall(IntCell(comm, patches, r, "id", &id));
     PetscCall(Cell(comm, patches, r, "kind", &kind));
-    PetscCheck(kind == "rigid", comm, PETSC_ERR_USER_INPUT, "%s line %d: patch kind '%s' is not known (rigid)", patches.path.c_str(), patches.lines[r], kind.c_str());
+    PetscCheck(kind == "rigid" || kind == "plate" || kind == "gmsh", comm, PETSC_ERR_USER_INPUT, "%s line %d: patch kind '%s' is not known (rigid, plate, gmsh)", patches.path.c_str(), patches.lines[r], kind.c_str());
     PetscCall(RealCell(comm, patches, r, "x", &x[0]));
     PetscCall(RealCell(comm, patches, r, "y", &x[1]));
     PetscCall(RealCell(comm, patches, r, "z", &x[2]));
-    PetscCall(BoltnetAssemblyAddRigidPatch(a, id, x));
+    if (kind == "rigid") {
+      PetscCall(BoltnetAssemblyAddRigidPatch(a, id, x));
+      continue;
+    }
+    // Shell patches: a generated plate (corner x, y, z; lx, ly; nx by ny elements) or a Gmsh part.
+    std::string          matname;
+    shell::ShellMaterial mat;
+    QuadMesh             mesh;
+    PetscCall(Cell(comm, patches, r, "material", &matname));
+    PetscCheck(!matname.empty(), comm, PETSC_ERR_USER_INPUT, "%s line %d: a %s patch needs a material", patches.path.c_str(), patches.lines[r], kind.c_str());
+    PetscCall(MaterialFromOptions(comm, matname, &mat));
+    if (kind == "plate") {
+      PetscReal lx, ly;
+      PetscInt  nx, ny;
+      PetscCall(RealCell(comm, patches, r, "lx", &lx));
+      PetscCall(RealCell(comm, patches, r, "ly", &ly));
+      PetscCall(IntCell(comm, patches, r, "nx", &nx));
+      PetscCall(IntCell(comm, patches, r, "ny", &ny));
+      PetscCheck(lx > 0 && ly > 0 && nx > 0 && ny > 0, comm, PETSC_ERR_USER_INPUT, "%s line %d: a plate needs lx, ly > 0 and nx, ny >= 1", patches.path.c_str(), patches.lines[r]);
+      mesh = RectanglePlate(x[0], x[1], lx, ly, (int)nx, (int)ny, x[2]);
+    } else {
+      std::string file, part;
+      PetscCall(Cell(comm, patches, r, "mesh", &file));
+      PetscCall(Cell(comm, patches, r, "part", &part));
+      file = (file.empty() || file[0] == '/' || !scene->from_file.count("scene_patches")) ? file : scene->dir + "/" + file;
+      std::map<std::string, QuadMesh> parts;
+      PetscCall(Guard(comm, [&] {
+        parts = ReadGmsh(file);
+        return PetscErrorCode(0);
+      }));
+      PetscCheck(parts.count(part), comm, PETSC_ERR_USER_INPUT, "%s line %d: mesh '%s' has no part (physical surface) '%s'", patches.path.c_str(), patches.lines[r], file.c_str(), part.c_str());
+      mesh = parts[part];
+      for (auto &xn : mesh.x)
+        for (int k = 0; k < 3; ++k) xn[k] += x[k]; // x, y, z: where the part is placed
+    }
+    PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
   }
   std::map<std::string, BoltnetJointParams> types;
   for (size_t r = 0; r < joints.rows.size(); ++r) {
@@ -244,7 +310,13 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
       PetscCall(RealCell(comm, joints, r, nc[k], &n[k]));
       PetscCall(RealCell(comm, joints, r, tc[k], &t[k]));
     }
-    PetscCall(BoltnetAssemblyAddJoint(a, id, pa, pb, &types[type], n, t));
+    PetscReal pos[3] = {0, 0, 0};
+    if (HasColumn(joints, "x")) {
+      PetscCall(RealCell(comm, joints, r, "x", &pos[0]));
+      PetscCall(RealCell(comm, joints, r, "y", &pos[1]));
+      PetscCall(RealCell(comm, joints, r, "z", &pos[2]));
+    }
+    PetscCall(BoltnetAssemblyAddJointAt(a, id, pa, pb, &types[type], n, t, pos));
   }
   const std::map<std::string, PetscInt> dofs = {{"ux", 0}, {"uy", 1}, {"uz", 2}, {"rx", 3}, {"ry", 4}, {"rz", 5}, {"all", -1}};
   const std::map<std::string, BoltnetBCKind> kinds = {{"fixed", BOLTNET_BC_FIXED}, {"displacement", BOLTNET_BC_DISPLACEMENT}, {"force", BOLTNET_BC_FORCE}};
@@ -259,7 +331,9 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
     PetscCheck(dofs.count(dof), comm, PETSC_ERR_USER_INPUT, "%s line %d: dof '%s' is not one of ux uy uz rx ry rz all", bcs.path.c_str(), bcs.lines[r], dof.c_str());
     PetscCheck(kinds.count(kind), comm, PETSC_ERR_USER_INPUT, "%s line %d: kind '%s' is not one of fixed displacement force", bcs.path.c_str(), bcs.lines[r], kind.c_str());
     PetscCheck(!(kind == "force" && dof == "all"), comm, PETSC_ERR_USER_INPUT, "%s line %d: a force needs one dof, not 'all'", bcs.path.c_str(), bcs.lines[r]);
-    PetscCall(BoltnetAssemblyAddBC(a, patch, dofs.at(dof), kinds.at(kind), value));
+    std::string set;
+    if (HasColumn(bcs, "set")) PetscCall(Cell(comm, bcs, r, "set", &set));
+    PetscCall(BoltnetAssemblyAddBCOnSet(a, patch, set.c_str(), dofs.at(dof), kinds.at(kind), value));
   }
   PetscFunctionReturn(0);
 }
@@ -273,7 +347,7 @@ PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm)
   PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
   for (PetscInt i = 0; i < n; ++i) {
     const std::string s = names[i];
-    if (s.rfind("scene_", 0) == 0 || s.rfind("joint_", 0) == 0 || s.rfind("load_", 0) == 0 || s == "output_dir") bad += " -" + s;
+    if (s.rfind("scene_", 0) == 0 || s.rfind("joint_", 0) == 0 || s.rfind("load_", 0) == 0 || s.rfind("material_", 0) == 0 || s.rfind("coupling_", 0) == 0 || s == "output_dir") bad += " -" + s;
   }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Unknown boltnet option(s):%s (misspelled, or a joint type that no joint of the fastener table uses?); -help lists the options", bad.c_str());

@@ -140,34 +140,48 @@ PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly a, PetscInt patch, PetscInt 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+namespace boltnet {
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckNotSetUp(a));
-  PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  PetscCheck(!mesh.quads.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
   ShellPatch sp;
-  sp.id = id;
-  for (PetscInt i = 0; i < nnodes; ++i) sp.mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+  sp.id       = id;
+  sp.mesh     = std::move(mesh);
+  sp.material = material;
+  PatchComp p{};
+  p.id     = id;
+  p.index  = (PetscInt)a->patches.size();
+  p.kind   = static_cast<PetscInt>(PatchKind::Shell);
+  p.nnodes = (PetscInt)sp.mesh.x.size();
+  for (int k = 0; k < 3; ++k) p.x[k] = sp.mesh.x[0][k];
+  a->shells[p.index] = std::move(sp);
+  a->patches.push_back(p);
+  PetscFunctionReturn(0);
+}
+} // namespace boltnet
+
+PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  QuadMesh             mesh;
+  shell::ShellMaterial mat;
+  PetscFunctionBeginUser;
+  PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
   for (PetscInt e = 0; e < nquads; ++e) {
     std::array<int, 4> q;
     for (int k = 0; k < 4; ++k) {
       PetscCheck(quads[4 * e + k] >= 0 && quads[4 * e + k] < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": quadrangle %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT, id, e, quads[4 * e + k], nnodes - 1);
       q[k] = (int)quads[4 * e + k];
     }
-    sp.mesh.quads.push_back(q);
+    mesh.quads.push_back(q);
   }
   PetscCall(Guard(a->comm, [&] {
-    sp.material = shell::IsotropicMaterial(E, nu, t);
+    mat = shell::IsotropicMaterial(E, nu, t);
     return PetscErrorCode(0);
   }));
-  PatchComp p{};
-  p.id     = id;
-  p.index  = (PetscInt)a->patches.size();
-  p.kind   = static_cast<PetscInt>(PatchKind::Shell);
-  p.nnodes = nnodes;
-  p.x[0] = sp.mesh.x[0][0], p.x[1] = sp.mesh.x[0][1], p.x[2] = sp.mesh.x[0][2];
-  a->shells[p.index] = std::move(sp);
-  a->patches.push_back(p);
+  PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
   PetscFunctionReturn(0);
 }
 

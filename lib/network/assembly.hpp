@@ -130,6 +130,9 @@ struct _p_BoltnetAssembly {
 
 namespace boltnet {
 
+// A shell patch from a mesh (node sets included) and a section (network/api.cpp).
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material);
+
 // Network assembly (network/assembly.cpp).
 PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a);
 PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx);
