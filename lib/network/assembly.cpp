@@ -324,6 +324,12 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
 
   PetscCall(DMCreateGlobalVector(a->dm, &a->X));
   PetscCall(VecGetSize(a->X, &a->ndof_global));
+  {
+    PetscInt nloc, nmax;
+    PetscCall(VecGetLocalSize(a->X, &nloc));
+    PetscCallMPI(MPI_Allreduce(&nloc, &nmax, 1, MPIU_INT, MPI_MAX, a->comm));
+    a->dof_imbalance = a->ndof_global > 0 ? (PetscReal)nmax * a->size / (PetscReal)a->ndof_global : 1;
+  }
   PetscCall(VecSet(a->X, 0.0));
   PetscCall(CreateJacobian(a));
   PetscCall(MatSetOption(a->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
@@ -332,15 +338,11 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps)
+namespace {
+// The joints evaluated from the local (ghosted) vector x.
+PetscErrorCode EvaluateJointsLocal(BoltnetAssembly a, const PetscScalar *x, std::vector<Response> &out, std::vector<Vec6> *jumps)
 {
-  Vec                Xl;
-  const PetscScalar *x;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(a->dm, &Xl));
-  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
-  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
-  PetscCall(VecGetArrayRead(Xl, &x));
   out.resize(a->eEnd - a->eStart);
   if (jumps) jumps->resize(a->eEnd - a->eStart);
   for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
@@ -351,6 +353,20 @@ PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Resp
     out[e - a->eStart] = evaluate(ev.joint->params, a->committed[e - a->eStart], du, a->tangent);
     if (jumps) (*jumps)[e - a->eStart] = du;
   }
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps)
+{
+  Vec                Xl;
+  const PetscScalar *x;
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(a->dm, &Xl));
+  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
+  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
+  PetscCall(VecGetArrayRead(Xl, &x));
+  PetscCall(EvaluateJointsLocal(a, x, out, jumps));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(DMRestoreLocalVector(a->dm, &Xl));
   PetscFunctionReturn(0);
@@ -359,12 +375,17 @@ PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Resp
 static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
-  Vec                   Fl;
-  const PetscScalar    *x;
+  Vec                   Xl, Fl;
+  const PetscScalar    *x, *xl;
   PetscScalar          *f;
   std::vector<Response> resp;
   PetscFunctionBeginUser;
-  PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  // One ghost update of X (collective: every rank takes part, owned patches or not).
+  PetscCall(DMGetLocalVector(a->dm, &Xl));
+  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
+  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
+  PetscCall(VecGetArrayRead(Xl, &xl));
+  PetscCall(EvaluateJointsLocal(a, xl, resp, nullptr));
   PetscCall(DMGetLocalVector(a->dm, &Fl));
   PetscCall(VecSet(Fl, 0.0));
   PetscCall(VecGetArray(Fl, &f));
@@ -378,25 +399,17 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
       f[oa + i] -= g[i];
     }
   }
-  if (!a->ops.empty()) { // the shell patches' linear forces K u
-    Vec                Xl;
-    const PetscScalar *xl;
-    PetscCall(DMGetLocalVector(a->dm, &Xl));
-    PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
-    PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
-    PetscCall(VecGetArrayRead(Xl, &xl));
-    for (const auto &[v, op] : a->ops) {
-      PetscInt o;
-      PetscCall(DMNetworkGetLocalVecOffset(a->dm, v, ALL_COMPONENTS, &o));
-      for (PetscInt r = 0; r < op.n; ++r) {
-        PetscScalar sum = 0;
-        for (PetscInt k = op.rowptr[r]; k < op.rowptr[r + 1]; ++k) sum += op.vals[k] * xl[o + op.cols[k]];
-        f[o + r] += sum;
-      }
+  for (const auto &[v, op] : a->ops) { // the owned shell patches' linear forces K u
+    PetscInt o;
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, v, ALL_COMPONENTS, &o));
+    for (PetscInt r = 0; r < op.n; ++r) {
+      PetscScalar sum = 0;
+      for (PetscInt k = op.rowptr[r]; k < op.rowptr[r + 1]; ++k) sum += op.vals[k] * xl[o + op.cols[k]];
+      f[o + r] += sum;
     }
-    PetscCall(VecRestoreArrayRead(Xl, &xl));
-    PetscCall(DMRestoreLocalVector(a->dm, &Xl));
   }
+  PetscCall(VecRestoreArrayRead(Xl, &xl));
+  PetscCall(DMRestoreLocalVector(a->dm, &Xl));
   PetscCall(VecRestoreArray(Fl, &f));
   PetscCall(VecSet(F, 0.0));
   PetscCall(DMLocalToGlobalBegin(a->dm, Fl, ADD_VALUES, F));

@@ -97,6 +97,7 @@ struct _p_BoltnetAssembly {
   Vec      X    = nullptr; // converged solution
   PetscInt vStart = 0, vEnd = 0, eStart = 0, eEnd = 0;
   PetscInt ndof_global = 0;
+  PetscReal dof_imbalance = 1; // max over ranks of the owned dof / their mean
 
   // History per local edge (edge e has index e - eStart), owned by the edge's rank.
   std::vector<boltnet::History> committed;
