@@ -62,6 +62,7 @@ PetscErrorCode Run(int *exitcode)
 
   const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
   PetscCall(OutputOpen(comm, dir, scene.name, &out));
+  out.identified = "{" + scene.identified + "}";
   a->on_step = [&out](BoltnetAssembly as, const StepInfo &info) { return OutputStep(as, info, &out); };
   PetscCall(PetscPrintf(comm, "boltnet: scene %s, %zu patches, %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)\n", scene.name.c_str(), a->patches.size(), a->joints.size(), a->ndof_global, a->size, (double)a->dof_imbalance));
 

@@ -14,6 +14,7 @@ docs/identify.md. Bad input stops with a message naming it and a non-zero exit.\
 
 #include "identify/curve.hpp"
 #include "identify/fastener.hpp"
+#include "identify/options.hpp"
 
 #include <boltnet.h>
 #include <petscsys.h>
@@ -54,48 +55,18 @@ PetscErrorCode PrintJoint(MPI_Comm comm, const char *type, const Params &p)
 
 PetscErrorCode GeometryMode(MPI_Comm comm, const char *jointType)
 {
-  FastenerGeometry g;
-  PetscInt         formula = 0, type = 0, n = 1;
-  PetscReal        kt = 0, kg = 0, kr = 0, mu = NAN;
-  PetscBool        hasMu = PETSC_FALSE;
+  FastenerOptions o;
+  Params          p;
+  PetscBool       helpOnly;
   PetscFunctionBeginUser;
-  PetscOptionsBegin(comm, "fastener_", "boltnet-identify: fastener geometry (geometry mode)", "boltnet");
-  PetscCall(PetscOptionsReal("-d", "Fastener (shank) diameter (mm)", "", g.d, &g.d, nullptr));
-  PetscCall(PetscOptionsReal("-hole", "Hole diameter (mm); the clearance is (hole - d)/2", "", g.hole, &g.hole, nullptr));
-  PetscCall(PetscOptionsReal("-t1", "Thickness of plate 1 (mm); double shear: the middle plate", "", g.t1, &g.t1, nullptr));
-  PetscCall(PetscOptionsReal("-t2", "Thickness of plate 2 (mm); double shear: each outer plate", "", g.t2, &g.t2, nullptr));
-  PetscCall(PetscOptionsReal("-E1", "Modulus of plate 1 (MPa); laminate: its effective bearing modulus", "", g.E1, &g.E1, nullptr));
-  PetscCall(PetscOptionsReal("-E2", "Modulus of plate 2 (MPa); laminate: its effective bearing modulus", "", g.E2, &g.E2, nullptr));
-  PetscCall(PetscOptionsReal("-Ef", "Fastener modulus (MPa)", "", g.Ef, &g.Ef, nullptr));
-  PetscCall(PetscOptionsReal("-nu", "Fastener Poisson ratio (Tate-Rosenfeld, Nelson)", "", g.nu_f, &g.nu_f, nullptr));
-  PetscCall(PetscOptionsInt("-shear_planes", "Shear planes n: 1 single shear, 2 double shear", "", n, &n, nullptr));
-  PetscCall(PetscOptionsReal("-torque", "Installation torque T (N mm); Pc = T/(K d)", "", g.torque, &g.torque, nullptr));
-  PetscCall(PetscOptionsReal("-preload", "Bolt preload Pc (N); overrides the torque", "", g.preload, &g.preload, nullptr));
-  PetscCall(PetscOptionsReal("-nut_factor", "Nut factor K in Pc = T/(K d)", "", g.K, &g.K, nullptr));
-  PetscCall(PetscOptionsReal("-mu", "Friction coefficient, in [0, 2] (required)", "", mu, &mu, &hasMu));
-  PetscCall(PetscOptionsReal("-nf", "Friction interfaces (0: as many as shear planes)", "", g.nf, &g.nf, nullptr));
-  PetscCall(PetscOptionsReal("-offset_t1", "Initial bolt offset in the hole along t1 (mm)", "", g.offset[0], &g.offset[0], nullptr));
-  PetscCall(PetscOptionsReal("-offset_t2", "Initial bolt offset in the hole along t2 (mm)", "", g.offset[1], &g.offset[1], nullptr));
-  PetscCall(PetscOptionsEList("-formula", "Fastener flexibility formula for the bearing stiffness kc", "", formulaChoices, 6, formulaChoices[formula], &formula, nullptr));
-  PetscCall(PetscOptionsEList("-type", "Huth's joint type (sets a, b)", "", typeChoices, 3, typeChoices[type], &type, nullptr));
-  PetscCall(PetscOptionsReal("-beta", "Nelson et al.: bearing factor (1 + 3 beta)", "", g.beta, &g.beta, nullptr));
-  PetscCall(PetscOptionsReal("-kt", "Stick stiffness ke (N/mm); 0: equal to the bearing stiffness kc", "", kt, &kt, nullptr));
-  PetscCall(PetscOptionsReal("-kg", "Regularisation stiffness while sliding (N/mm)", "", kg, &kg, nullptr));
-  PetscCall(PetscOptionsReal("-kr", "Rotational stiffness (N mm/rad); 0: 1e3 kn d^2 (rigid rotation)", "", kr, &kr, nullptr));
-  PetscOptionsEnd();
-  PetscBool helpOnly;
+  PetscCall(FastenerFromOptions(comm, "fastener_", "boltnet-identify: fastener geometry (geometry mode)", &o));
   PetscCall(PetscOptionsHasHelp(nullptr, &helpOnly));
   if (helpOnly) PetscFunctionReturn(0);
-  g.n  = (int)n;
-  g.mu = mu;
-  PetscCheck(hasMu, comm, PETSC_ERR_USER_INPUT, "No friction coefficient: give -fastener_mu (in [0, 2])");
-  const Formula  f = static_cast<Formula>(formula);
-  const HuthType t = static_cast<HuthType>(type);
-  const std::string bad = validateGeometry(g, f);
-  PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Bad fastener geometry (options -fastener_*): %s", bad.c_str());
-  const Params      p   = macroelement(g, f, t, kt, kg, kr);
-  const std::string bad2 = validate(p);
-  PetscCheck(bad2.empty(), comm, PETSC_ERR_USER_INPUT, "The macroelement from this geometry is not valid: %s", bad2.c_str());
+  PetscCall(FastenerMacroelement(comm, "fastener_", o, &p));
+  const FastenerGeometry &g  = o.g;
+  const Formula           f  = o.formula;
+  const HuthType          t  = o.type;
+  const double            kt = o.kt;
 
   const double C = compliance(g, f, t);
   PetscCall(PetscPrintf(comm, "# boltnet-identify: frictional macroelement from the fastener geometry (docs/identify.md)\n"));

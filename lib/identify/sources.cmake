@@ -3,7 +3,8 @@
 # (least-squares fit of the frictional law); docs/identify.md.
 target_sources(boltnet PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/fastener.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/curve.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/curve.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/options.cpp)
 
 # The driver boltnet-identify (drivers/identify.cpp): geometry mode and curve mode.
 add_executable(boltnet_identify ${PROJECT_SOURCE_DIR}/drivers/identify.cpp)

@@ -13,6 +13,7 @@ struct Scene {
   std::string           dir;        // its directory, against which the scene's relative paths resolve
   std::string           name;       // -scene_name
   std::set<std::string> from_file;  // option names (without '-') that the scene file set
+  std::string           identified; // JSON object: joint types identified from their geometry
 };
 
 // Insert the options of a YAML scene file; options already given (command line) win.
@@ -31,6 +32,7 @@ struct Output {
   // Most loaded joint: largest in-plane force magnitude over all joints and steps.
   PetscInt  most_joint = -1, most_step = 0;
   PetscReal most_force = -1, most_load = 0;
+  std::string identified = "{}"; // joint types identified from geometry at start-up (Scene)
 };
 PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, Output *out);
 PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);

@@ -96,6 +96,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   j << "],\n  \"most_loaded_joint\": ";
   if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << out->most_load << ", \"in_plane_force\": " << out->most_force << "}";
   else j << "null";
+  j << ",\n  \"identified_joint_types\": " << out->identified;
   j << "\n}\n";
   // Write then rename, so that summary.json is either absent or whole.
   const std::string tmp = out->dir + "/summary.json.tmp";

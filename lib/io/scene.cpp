@@ -3,6 +3,7 @@
 #include "io/io.hpp"
 #include "core/guard.hpp"
 #include "mesh/gmsh.hpp"
+#include "identify/options.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -112,7 +113,7 @@ std::string Resolve(const Scene &s, const std::string &option, const std::string
 }
 
 // Options of one joint type, prefix joint_<type>_; -help lists them with defaults and units.
-PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, BoltnetJointParams *p)
+PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, BoltnetJointParams *p, Scene *scene)
 {
   const char *laws[] = {"spring", "contact", "friction"};
   PetscInt    law    = 0;
@@ -121,6 +122,30 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, Bolt
   const std::string title  = "Joint type '" + type + "' (units: N, mm, N/mm, N mm/rad)";
   PetscFunctionBeginUser;
   PetscCall(BoltnetJointParamsSetDefault(BOLTNET_LAW_SPRING, p));
+  // Parameters given, or identified from the fastener's geometry at start-up (issue 5 item 4).
+  const char *sources[] = {"parameters", "geometry"};
+  PetscInt    source    = 0;
+  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
+  PetscCall(PetscOptionsEList("-from", "Where the macroelement's parameters come from: the options below, or the fastener geometry (-joint_<type>_fastener_*, docs/identify.md)", "", sources, 2, sources[0], &source, nullptr));
+  PetscOptionsEnd();
+  if (source == 1) {
+    identify::FastenerOptions o;
+    Params                    q;
+    const std::string         fprefix = prefix + "fastener_";
+    const std::string         ftitle  = "Joint type '" + type + "': fastener geometry (units: N, mm, MPa, N mm)";
+    PetscCall(identify::FastenerFromOptions(comm, fprefix.c_str(), ftitle.c_str(), &o));
+    PetscCall(identify::FastenerMacroelement(comm, fprefix.c_str(), o, &q));
+    p->law = BOLTNET_LAW_FRICTION;
+    p->kn = q.kn, p->kt = q.kt, p->kr = q.kr, p->kc = q.kc, p->kg = q.kg, p->gap = q.gap, p->mu = q.mu, p->nf = q.nf;
+    p->pretension = q.pretension, p->clamp_coupling = q.clamp_coupling, p->offset[0] = q.offset[0], p->offset[1] = q.offset[1];
+    std::ostringstream j;
+    j.precision(17);
+    j << (scene->identified.empty() ? "" : ", ") << "\"" << type << "\": {\"formula\": \"" << identify::formulaName(o.formula) << "\", \"kn\": " << q.kn << ", \"kt\": " << q.kt << ", \"kc\": " << q.kc
+      << ", \"kg\": " << q.kg << ", \"kr\": " << q.kr << ", \"gap\": " << q.gap << ", \"mu\": " << q.mu << ", \"nf\": " << q.nf << ", \"pretension\": " << q.pretension << ", \"G\": " << frictionThreshold(q, 0.0) << "}";
+    scene->identified += j.str();
+    PetscCall(PetscInfo(nullptr, "joint type %s identified from its geometry: kc %g gap %g pretension %g\n", type.c_str(), q.kc, q.gap, q.pretension));
+    PetscFunctionReturn(0);
+  }
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
   PetscCall(PetscOptionsEList("-law", "Macroelement law", "", laws, 3, laws[law], &law, &set));
   p->law = static_cast<BoltnetLaw>(law);
@@ -299,7 +324,7 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
     std::string type;
     PetscCall(Cell(comm, joints, r, "type", &type));
     PetscCheck(!type.empty() && type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") == std::string::npos, comm, PETSC_ERR_USER_INPUT, "%s line %d: joint type '%s' must be lower-case letters and digits (it names the options -joint_<type>_*)", joints.path.c_str(), joints.lines[r], type.c_str());
-    if (!types.count(type)) PetscCall(JointTypeFromOptions(comm, type, &types[type]));
+    if (!types.count(type)) PetscCall(JointTypeFromOptions(comm, type, &types[type], scene));
     PetscInt  id, pa, pb;
     PetscReal n[3], t[3];
     PetscCall(IntCell(comm, joints, r, "id", &id));
