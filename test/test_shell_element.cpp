@@ -28,13 +28,6 @@ Nodes WarpedElement()
   return {Vec3{0.1, -0.2, 0.3}, Vec3{1.3, 0.1, 0.2}, Vec3{1.5, 1.2, 0.55}, Vec3{-0.1, 0.9, 0.4}};
 }
 
-ElementMatrix Stiffness(const Nodes &X, const ShellMaterial &m, double drill = kDefaultDrill)
-{
-  ElementMatrix K;
-  ElementStiffness(X, m, drill, K);
-  return K;
-}
-
 double MaxAbs(const ElementMatrix &K)
 {
   double m = 0;
@@ -145,19 +138,28 @@ TEST(ShellMaterial, BadLaminateRejected)
 TEST(ShellElement, StiffnessSymmetric)
 {
   const ShellMaterial m = LaminateMaterial({Carbon(0, 0.1), Carbon(45, 0.1), Carbon(90, 0.1)});
-  const ElementMatrix K = Stiffness(WarpedElement(), m);
-  const double s = MaxAbs(K);
-  for (int i = 0; i < 24; ++i)
-    for (int j = 0; j < i; ++j) EXPECT_NEAR(K[24 * i + j], K[24 * j + i], 1e-14 * s) << i << "," << j;
+  for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
+    ElementOptions o;
+    o.membrane = membrane;
+    ElementMatrix K;
+    ElementStiffness(WarpedElement(), m, o, K);
+    const double s = MaxAbs(K);
+    for (int i = 0; i < 24; ++i)
+      for (int j = 0; j < i; ++j) EXPECT_NEAR(K[24 * i + j], K[24 * j + i], 1e-14 * s) << i << "," << j;
+  }
 }
 
-// Requirement: the six rigid-body motions (3 translations, 3 rotations about arbitrary axes) give zero
-// nodal forces to round-off on a warped element, and the stiffness has no other zero-energy mode.
+// Requirement: the six rigid-body motions (3 translations, 3 rotations about an arbitrary point) give
+// zero nodal forces to round-off on a warped element (both membranes, isotropic and laminate).
 TEST(ShellElement, RigidBodyModes)
 {
   const Nodes X = WarpedElement();
-  for (const ShellMaterial &m : {IsotropicMaterial(70000, 0.3, 0.05), LaminateMaterial({Carbon(0), Carbon(90)})}) {
-    const ElementMatrix K = Stiffness(X, m);
+  for (const ShellMaterial &m : {IsotropicMaterial(70000, 0.3, 0.05), LaminateMaterial({Carbon(0), Carbon(90)})})
+  for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
+    ElementOptions o;
+    o.membrane = membrane;
+    ElementMatrix K;
+    ElementStiffness(X, m, o, K);
     const double s = MaxAbs(K);
     const Vec3 origin{0.7, -0.3, 2.0};
     for (int mode = 0; mode < 6; ++mode) {
@@ -182,16 +184,22 @@ TEST(ShellElement, RigidBodyModes)
         fmax = std::max(fmax, std::fabs(f));
         umax = std::max(umax, std::fabs(u[i]));
       }
-      EXPECT_LT(fmax, 1e-12 * s * umax) << "rigid mode " << mode;
+      EXPECT_LT(fmax, 1e-12 * s * umax) << "rigid mode " << mode << " membrane " << int(membrane);
     }
   }
 }
 
-// Requirement: no spurious zero-energy mode: exactly 6 zero eigenvalues (Jacobi eigenvalues of K).
+// Requirement: no spurious zero-energy mode: exactly 6 zero eigenvalues (Jacobi eigenvalues of K), with
+// either membrane and a small or a large drilling factor.
 TEST(ShellElement, ExactlySixZeroEigenvalues)
 {
-  for (double drill : {kDefaultDrill, 1.0}) {
-    ElementMatrix K = Stiffness(WarpedElement(), IsotropicMaterial(70000, 0.3, 0.05), drill);
+  for (double drill : {kDefaultDrill, 1.0})
+  for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
+    ElementOptions o;
+    o.drill = drill;
+    o.membrane = membrane;
+    ElementMatrix K;
+    ElementStiffness(WarpedElement(), IsotropicMaterial(70000, 0.3, 0.05), o, K);
     // Cyclic Jacobi on the 24x24 symmetric matrix.
     std::array<double, 576> a = K;
     for (int sweep = 0; sweep < 100; ++sweep) {
@@ -222,7 +230,7 @@ TEST(ShellElement, ExactlySixZeroEigenvalues)
     for (int i = 0; i < 24; ++i) ev.push_back(std::fabs(a[25 * i]));
     std::sort(ev.begin(), ev.end());
     const double big = ev.back();
-    for (int i = 0; i < 6; ++i) EXPECT_LT(ev[i], 1e-10 * big) << "drill " << drill << " eigenvalue " << i;
+    for (int i = 0; i < 6; ++i) EXPECT_LT(ev[i], 1e-10 * big) << "drill " << drill << " membrane " << int(membrane) << " eigenvalue " << i;
     // The seventh (smallest non-zero) is a genuine deformation mode, well clear of round-off.
     EXPECT_GT(ev[6], 1e-9 * big) << "drill " << drill;
   }
@@ -260,4 +268,84 @@ TEST(ShellElement, DegenerateRejected)
   EXPECT_THROW(ElementStiffness(X, IsotropicMaterial(1, 0.3, 0.1), kDefaultDrill, K), std::invalid_argument);
   const Nodes bowtie{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{1, 1, 0}};
   EXPECT_THROW(ElementStiffness(bowtie, IsotropicMaterial(1, 0.3, 0.1), kDefaultDrill, K), std::invalid_argument);
+  const Nodes square{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1, 0}, Vec3{0, 1, 0}};
+  EXPECT_THROW(ElementStiffness(square, IsotropicMaterial(1, 0.3, 0.1), -1.0, K), std::invalid_argument);
+}
+
+namespace {
+
+ShellMaterial AnglePly()
+{
+  ShellMaterial m = LaminateMaterial({Carbon(30), Carbon(-45), Carbon(0)});
+  m.direction = {1, 0.3, 0.2};
+  return m;
+}
+
+} // namespace
+
+// Requirement: the element is objective: rotating the nodes and the material direction by R gives
+// R K R^T (warped element, anisotropic laminate with B coupling).
+TEST(ShellElement, ObjectiveUnderRotation)
+{
+  const double a = 0.7, b = -0.4, c = 1.1; // R = Rz(a) Ry(b) Rx(c)
+  const double Rz[3][3] = {{std::cos(a), -std::sin(a), 0}, {std::sin(a), std::cos(a), 0}, {0, 0, 1}};
+  const double Ry[3][3] = {{std::cos(b), 0, std::sin(b)}, {0, 1, 0}, {-std::sin(b), 0, std::cos(b)}};
+  const double Rx[3][3] = {{1, 0, 0}, {0, std::cos(c), -std::sin(c)}, {0, std::sin(c), std::cos(c)}};
+  double R[3][3] = {}, T[3][3] = {};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) T[i][j] += Ry[i][k] * Rx[k][j];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) R[i][j] += Rz[i][k] * T[k][j];
+  auto rot = [&](const Vec3 &v) {
+    Vec3 r{};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) r[i] += R[i][j] * v[j];
+    return r;
+  };
+  const Nodes X = WarpedElement();
+  Nodes Xr;
+  for (int n = 0; n < 4; ++n) Xr[n] = rot(X[n]);
+  ShellMaterial m = AnglePly(), mr = m;
+  mr.direction = rot(m.direction);
+  ElementMatrix K, Kr;
+  ElementStiffness(X, m, ElementOptions{}, K);
+  ElementStiffness(Xr, mr, ElementOptions{}, Kr);
+  // Q = blockdiag(R, ..., R) (8 blocks): expect Kr = Q K Q^T.
+  auto Q = [&](int i, int j) { return (i / 3 == j / 3) ? R[i % 3][j % 3] : 0.0; };
+  const double s = MaxAbs(K);
+  for (int i = 0; i < 24; ++i)
+    for (int j = 0; j < 24; ++j) {
+      double v = 0;
+      for (int k = 3 * (i / 3); k < 3 * (i / 3) + 3; ++k)
+        for (int l = 3 * (j / 3); l < 3 * (j / 3) + 3; ++l) v += Q(i, k) * K[24 * k + l] * Q(j, l);
+      EXPECT_NEAR(Kr[24 * i + j], v, 1e-12 * s) << i << "," << j;
+    }
+}
+
+// Requirement: the stiffness does not depend on which node is numbered first (the element frame e1
+// changes; the material direction is projected into it): cyclic renumbering permutes K, nothing else.
+TEST(ShellElement, NodeNumberingInvariant)
+{
+  const Nodes X = WarpedElement();
+  for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
+    ElementOptions o;
+    o.membrane = membrane;
+    ElementMatrix K;
+    ElementStiffness(X, AnglePly(), o, K);
+    const double s = MaxAbs(K);
+    for (int shift = 1; shift < 4; ++shift) {
+      Nodes Xs;
+      for (int n = 0; n < 4; ++n) Xs[n] = X[(n + shift) % 4];
+      ElementMatrix Ks;
+      ElementStiffness(Xs, AnglePly(), o, Ks);
+      for (int p = 0; p < 4; ++p)
+        for (int q = 0; q < 4; ++q)
+          for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j)
+              EXPECT_NEAR(Ks[24 * (6 * p + i) + 6 * q + j], K[24 * (6 * ((p + shift) % 4) + i) + 6 * ((q + shift) % 4) + j], 1e-12 * s)
+                  << "shift " << shift << " membrane " << int(membrane);
+    }
+  }
 }

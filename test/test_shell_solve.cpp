@@ -34,20 +34,31 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 enum { UX = 0, UY, UZ, RX, RY, RZ };
 
+ElementOptions Drill(double drill, Membrane membrane = ElementOptions{}.membrane)
+{
+  ElementOptions o;
+  o.drill = drill;
+  o.membrane = membrane;
+  return o;
+}
+
 struct Mesh {
   std::vector<Vec3> X;
   std::vector<std::array<int, 4>> quads;
-  int nx = 0, ny = 0; // structured meshes: node (i, j) = j (nx + 1) + i
-  int Node(int i, int j) const { return j * (nx + 1) + i; }
+  int nx = 0, ny = 0;       // structured meshes: node (i, j) = j (nx + 1) + i
+  bool periodic = false;    // in t: row ny is row 0 (a closed cylinder or sphere)
+  int Node(int i, int j) const { return (periodic ? j % ny : j) * (nx + 1) + i; }
 };
 
 // A structured nx x ny mesh of the map (s, t) in [0,1]^2 -> R^3; elements counter-clockwise in (s, t).
-Mesh Grid(int nx, int ny, const std::function<Vec3(double, double)> &map)
+// periodic: t = 1 is t = 0 (the map must agree), the mesh closes on itself.
+Mesh Grid(int nx, int ny, const std::function<Vec3(double, double)> &map, bool periodic = false)
 {
   Mesh m;
   m.nx = nx;
   m.ny = ny;
-  for (int j = 0; j <= ny; ++j)
+  m.periodic = periodic;
+  for (int j = 0; j <= (periodic ? ny - 1 : ny); ++j)
     for (int i = 0; i <= nx; ++i) m.X.push_back(map(double(i) / nx, double(j) / ny));
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) m.quads.push_back({m.Node(i, j), m.Node(i + 1, j), m.Node(i + 1, j + 1), m.Node(i, j + 1)});
@@ -57,7 +68,7 @@ Mesh Grid(int nx, int ny, const std::function<Vec3(double, double)> &map)
 struct Problem {
   Mesh mesh;
   ShellMaterial mat;
-  double drill = kDefaultDrill;
+  ElementOptions opt;                  // drilling factor, membrane interpolation
   std::vector<double> F;               // nodal forces, 6 per node
   std::map<PetscInt, double> fixed;    // prescribed dof -> value
   Problem(Mesh m, ShellMaterial s) : mesh(std::move(m)), mat(s), F(6 * mesh.X.size(), 0.0) {}
@@ -90,7 +101,7 @@ std::vector<double> Solve(const Problem &p)
   CHK(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 54, nullptr, &A));
   for (const auto &q : p.mesh.quads) {
     ElementMatrix K;
-    ElementStiffness(p.ElementNodes(q), p.mat, p.drill, K);
+    ElementStiffness(p.ElementNodes(q), p.mat, p.opt, K);
     PetscInt idx[24];
     for (int a = 0; a < 4; ++a)
       for (int k = 0; k < 6; ++k) idx[6 * a + k] = 6 * q[a] + k;
@@ -152,16 +163,27 @@ ElementVector Gather(const std::vector<double> &u, const std::array<int, 4> &q)
 // Scordelis-Lo roof (MacNeal & Harder): R = 25, L = 50, +-40 deg, t = 0.25, E = 4.32e8, nu = 0, self
 // weight 90 per unit area, rigid diaphragms at the ends. Axis along x, crown at y = 0, z = R.
 // Quarter model (x in [0, 25], phi in [0, 40 deg]) or full model (2n x 2n, the same nodes mirrored).
-double ScordelisLo(int n, double drill, bool full = false)
+struct RoofOptions {
+  bool full = false;           // the whole roof instead of the quarter
+  bool free_crown_normal = false; // quarter model without theta_z = 0 on the crown plane y = 0 (wrong)
+  double distortion = 0;       // interior nodes moved along the surface by up to this fraction of an element
+};
+double ScordelisLo(int n, ElementOptions o, RoofOptions r = {})
 {
   const double R = 25, L = 50, phi0 = 40 * kPi / 180;
+  const bool full = r.full;
   const int m = full ? 2 * n : n;
   Mesh mesh = Grid(m, m, [&](double s, double t) {
+    if (s > 0 && s < 1 && t > 0 && t < 1 && r.distortion > 0) { // smooth-free, node-to-node irregularity
+      const int i = int(std::lround(s * m)), j = int(std::lround(t * m));
+      s += r.distortion / m * (((i * 7 + j * 3) % 5) / 2.0 - 1);
+      t += r.distortion / m * (((i * 3 + j * 11) % 5) / 2.0 - 1);
+    }
     const double x = full ? L * s : L / 2 * s, phi = full ? phi0 * (2 * t - 1) : phi0 * t;
     return Vec3{x, R * std::sin(phi), R * std::cos(phi)};
   });
   Problem p(mesh, IsotropicMaterial(4.32e8, 0.0, 0.25));
-  p.drill = drill;
+  p.opt = o;
   p.SurfaceLoad({0, 0, -90});
   for (int j = 0; j <= m; ++j) {
     p.FixAll(mesh.Node(0, j), {UY, UZ}); // diaphragm at x = 0
@@ -169,7 +191,10 @@ double ScordelisLo(int n, double drill, bool full = false)
     else p.FixAll(mesh.Node(m, j), {UX, RY, RZ}); // symmetry plane x = L/2 (normal x)
   }
   if (!full)
-    for (int i = 0; i <= m; ++i) p.FixAll(mesh.Node(i, 0), {UY, RX, RZ}); // symmetry plane y = 0 (normal y)
+    for (int i = 0; i <= m; ++i) {
+      p.FixAll(mesh.Node(i, 0), {UY, RX}); // symmetry plane y = 0 (normal y)
+      if (!r.free_crown_normal) p.Fix(mesh.Node(i, 0), RZ);
+    }
   else p.Fix(mesh.Node(n, n), UX); // the axial rigid translation
   const std::vector<double> u = Solve(p);
   return -u[6 * mesh.Node(full ? n : m, m) + UZ]; // free edge (phi = +40 deg), mid-span
@@ -178,15 +203,32 @@ double ScordelisLo(int n, double drill, bool full = false)
 // Pinched cylinder (MacNeal & Harder): R = 300, L = 600, t = 3, E = 3e6, nu = 0.3, diaphragms at both
 // ends, two opposite radial loads P = 1 at mid-length. One eighth: x in [0, 300] (diaphragm at x = 0,
 // symmetry at x = 300), theta in [0, 90 deg] from the load (top, z = R) to the plane z = 0.
-double PinchedCylinder(int n, double drill)
+// full: the whole cylinder (2n elements along the length, 4n around, closed), diaphragms at both ends,
+// both loads, u_x fixed at one mid-length node (the axial rigid translation).
+double PinchedCylinder(int n, ElementOptions o, bool full = false)
 {
   const double R = 300, L = 600;
-  Mesh mesh = Grid(n, n, [&](double s, double t) {
+  Mesh mesh = full ? Grid(2 * n, 4 * n, [&](double s, double t) {
+    const double th = 2 * kPi * t;
+    return Vec3{L * s, R * std::sin(th), R * std::cos(th)};
+  }, true)
+                   : Grid(n, n, [&](double s, double t) {
     const double th = kPi / 2 * t;
     return Vec3{L / 2 * s, R * std::sin(th), R * std::cos(th)};
   });
   Problem p(mesh, IsotropicMaterial(3e6, 0.3, 3.0));
-  p.drill = drill;
+  p.opt = o;
+  if (full) {
+    for (int j = 0; j < 4 * n; ++j) {
+      p.FixAll(mesh.Node(0, j), {UY, UZ});
+      p.FixAll(mesh.Node(2 * n, j), {UY, UZ});
+    }
+    p.Fix(mesh.Node(n, n), UX);
+    p.F[6 * mesh.Node(n, 0) + UZ] = -1;
+    p.F[6 * mesh.Node(n, 2 * n) + UZ] = 1;
+    const std::vector<double> u = Solve(p);
+    return -u[6 * mesh.Node(n, 0) + UZ];
+  }
   for (int j = 0; j <= n; ++j) {
     p.FixAll(mesh.Node(0, j), {UY, UZ});         // diaphragm
     p.FixAll(mesh.Node(n, j), {UX, RY, RZ});     // symmetry plane x = L/2
@@ -205,35 +247,78 @@ double PinchedCylinder(int n, double drill)
 // loads of 2 on the equator alternately outward and inward. Quarter model: azimuth psi in [0, 90 deg]
 // (s), polar angle from 90 deg (equator, t = 0) to 18 deg (hole, t = 1); symmetry planes y = 0 and
 // x = 0; loads +1 along x at psi = 0, -1 along y at psi = 90 deg; u_z fixed at one equator node.
-double Hemisphere(int n, double drill)
+// full: the whole hemisphere (4n elements around, closed), loads of 2, rigid motions removed by
+// u_y = 0 at psi = 0 and 180 deg, u_x = 0 at 90 deg, u_z = 0 at 45, 135 and 225 deg on the equator
+// (all true of the symmetric solution, as in the quarter model).
+double Hemisphere(int n, ElementOptions o, bool full = false)
 {
   const double R = 10;
-  Mesh mesh = Grid(n, n, [&](double s, double t) {
-    const double psi = kPi / 2 * s, th = kPi / 2 - (72 * kPi / 180) * t;
+  const int ns = full ? 4 * n : n;
+  auto map = [&](double t, double s) { // t: polar (0 equator .. 1 hole), s: azimuth fraction
+    const double psi = (full ? 2 * kPi : kPi / 2) * s, th = kPi / 2 - (72 * kPi / 180) * t;
     return Vec3{R * std::sin(th) * std::cos(psi), R * std::sin(th) * std::sin(psi), R * std::cos(th)};
-  });
+  };
+  // Full: periodic in azimuth, which is the mesh's t direction; the quarter keeps azimuth along s.
+  Mesh mesh = full ? Grid(n, ns, [&](double s, double t) { return map(s, t); }, true)
+                   : Grid(n, n, [&](double s, double t) { return map(t, s); });
+  // node at azimuth index a (0 .. ns), polar index b (0 = equator)
+  auto node = [&](int a, int b) { return full ? mesh.Node(b, a) : mesh.Node(a, b); };
   Problem p(mesh, IsotropicMaterial(6.825e7, 0.3, 0.04));
-  p.drill = drill;
-  for (int j = 0; j <= n; ++j) {
-    p.FixAll(mesh.Node(0, j), {UY, RX, RZ}); // plane y = 0
-    p.FixAll(mesh.Node(n, j), {UX, RY, RZ}); // plane x = 0
+  p.opt = o;
+  if (full) {
+    p.Fix(node(0, 0), UY);
+    p.Fix(node(2 * n, 0), UY);
+    p.Fix(node(n, 0), UX);
+    for (int a : {n / 2, 3 * n / 2, 5 * n / 2}) p.Fix(node(a, 0), UZ);
+    p.F[6 * node(0, 0) + UX] = 2;
+    p.F[6 * node(n, 0) + UY] = -2;
+    p.F[6 * node(2 * n, 0) + UX] = -2;
+    p.F[6 * node(3 * n, 0) + UY] = 2;
+  } else {
+    for (int j = 0; j <= n; ++j) {
+      p.FixAll(node(0, j), {UY, RX, RZ}); // plane y = 0
+      p.FixAll(node(n, j), {UX, RY, RZ}); // plane x = 0
+    }
+    p.Fix(node(n / 2, 0), UZ);
+    p.F[6 * node(0, 0) + UX] = 1;
+    p.F[6 * node(n, 0) + UY] = -1;
   }
-  p.Fix(mesh.Node(n / 2, 0), UZ);
-  p.F[6 * mesh.Node(0, 0) + UX] = 1;
-  p.F[6 * mesh.Node(n, 0) + UY] = -1;
   const std::vector<double> u = Solve(p);
-  return u[6 * mesh.Node(0, 0) + UX];
+  return u[6 * node(0, 0) + UX];
+}
+
+// Straight cantilever (MacNeal & Harder): L = 6, width 0.2, t = 0.1, E = 1e7, nu = 0.3, 6 x 1 regular
+// elements, clamped at x = 0; unit tip load shared by the two tip nodes. load: 0 extension (x), 1
+// in-plane shear (y), 2 out-of-plane shear (z), 3 twist (unit moment about x as a couple of z forces;
+// returns the tip rotation).
+double Cantilever(int load, ElementOptions o)
+{
+  Mesh mesh = Grid(6, 1, [](double s, double t) { return Vec3{6 * s, 0.2 * t - 0.1, 0}; });
+  Problem p(mesh, IsotropicMaterial(1e7, 0.3, 0.1));
+  p.opt = o;
+  p.FixAll(mesh.Node(0, 0), {UX, UY, UZ, RX, RY, RZ});
+  p.FixAll(mesh.Node(0, 1), {UX, UY, UZ, RX, RY, RZ});
+  const int a = mesh.Node(6, 0), b = mesh.Node(6, 1);
+  if (load < 3) {
+    p.F[6 * a + load] = p.F[6 * b + load] = 0.5;
+  } else {
+    p.F[6 * a + UZ] = -5; // a couple: -5 at y = -0.1, +5 at y = +0.1, moment 1 about x
+    p.F[6 * b + UZ] = 5;
+  }
+  const std::vector<double> u = Solve(p);
+  if (load < 3) return 0.5 * (u[6 * a + load] + u[6 * b + load]);
+  return (u[6 * b + UZ] - u[6 * a + UZ]) / 0.2;
 }
 
 // Square plate, side a = 1, t = 0.01 (a/t = 100), E = 1e7, nu = 0.3, uniform q = 1;
 // quarter model; hard simple support (w = 0 and the rotation about the edge normal = 0) or clamped.
 // Returns w_centre D / (q a^4).
-double SquarePlate(int n, bool clamped, double drill = kDefaultDrill)
+double SquarePlate(int n, bool clamped, ElementOptions o = {})
 {
   const double a = 1, t = 0.01, E = 1e7, nu = 0.3, D = E * t * t * t / (12 * (1 - nu * nu));
   Mesh mesh = Grid(n, n, [&](double s, double r) { return Vec3{a / 2 * s, a / 2 * r, 0}; });
   Problem p(mesh, IsotropicMaterial(E, nu, t));
-  p.drill = drill;
+  p.opt = o;
   p.SurfaceLoad({0, 0, 1});
   for (int k = 0; k <= n; ++k) {
     // edges x = 0 and y = 0 are supported
@@ -343,7 +428,7 @@ double PatchTestError(const ShellMaterial &mat, const std::array<double, 3> &eps
     const auto me = InAxes(eps, P, f.e1, f.e2), ke = InAxes(kap, P, f.e1, f.e2);
     for (double xi : {-0.577, 0.577})
       for (double eta : {-0.577, 0.577}) {
-        const GeneralisedStrains s = ElementStrains(X, Gather(u, q), xi, eta);
+        const GeneralisedStrains s = ElementStrains(X, mat, p.opt, Gather(u, q), xi, eta);
         for (int k = 0; k < 3; ++k)
           for (double z : {-t / 2, t / 2})
             err = std::max(err, std::fabs(s.membrane[k] + z * s.curvature[k] - me[k] - z * ke[k]) / escale);
@@ -501,32 +586,76 @@ TEST(ShellPlate, ClampedCentreDeflection)
 // MacNeal-Harder / Belytschko benchmarks (tolerances from docs/shell-convergence.md; see docs/shell.md).
 
 // Requirement: Scordelis-Lo roof, 16x16 quarter model: vertical displacement at mid free edge 0.3024
-// within 2% (table: 16x16 is 1.0xx, 32x32 1.0xx).
+// within 1% (table: from 8x8 on within 0.5%, 16x16 0.2% low; the mesh limit is 0.25% below 0.3024;
+// the plain bilinear membrane is 1.1% low at 16x16).
 TEST(ShellBenchmark, ScordelisLoRoof)
 {
-  EXPECT_NEAR(ScordelisLo(16, kDefaultDrill) / kScordelisLo, 1.0, 0.02);
+  EXPECT_NEAR(ScordelisLo(16, ElementOptions{}) / kScordelisLo, 1.0, 0.01);
 }
 
 // Requirement: the quarter model with its symmetry conditions (u_n = 0 and both in-plane rotations,
-// the drilling one included, = 0) gives the full model's answer to round-off.
+// the one about the shell normal included, = 0) gives the full model's answer to round-off.
 TEST(ShellBenchmark, ScordelisLoSymmetryEqualsFullModel)
 {
-  const double quarter = ScordelisLo(6, kDefaultDrill), full = ScordelisLo(6, kDefaultDrill, true);
+  const double quarter = ScordelisLo(6, ElementOptions{}), full = ScordelisLo(6, ElementOptions{}, {true});
   EXPECT_NEAR(quarter / full, 1.0, 1e-9);
 }
 
-// Requirement: pinched cylinder, 1/8 model 16x16: radial displacement under the load 1.8248e-5
-// within the tolerance the table supports (see docs/shell.md).
+// Requirement: the 1/8 cylinder with its three symmetry planes gives the whole (closed) cylinder's answer.
+TEST(ShellBenchmark, PinchedCylinderSymmetryEqualsFullModel)
+{
+  EXPECT_NEAR(PinchedCylinder(4, ElementOptions{}) / PinchedCylinder(4, ElementOptions{}, true), 1.0, 1e-9);
+}
+
+// Requirement: the quarter hemisphere with its two symmetry planes gives the whole hemisphere's answer.
+TEST(ShellBenchmark, PinchedHemisphereSymmetryEqualsFullModel)
+{
+  EXPECT_NEAR(Hemisphere(4, ElementOptions{}) / Hemisphere(4, ElementOptions{}, true), 1.0, 1e-9);
+}
+
+// Requirement: warped elements (arbitrary geometry): the roof on an irregular 16x16 mesh whose nodes
+// lie on the cylinder off the regular grid (every element warped) is within 2% of 0.3024 (table:
+// 16x16 irregular is 1.05% low, 32x32 0.6%, against 0.2% and 0.3% for the regular mesh).
+TEST(ShellBenchmark, ScordelisLoWarpedMesh)
+{
+  EXPECT_NEAR(ScordelisLo(16, ElementOptions{}, {false, false, 0.3}) / kScordelisLo, 1.0, 0.02);
+}
+
+// Requirement: no membrane locking in in-plane bending (the incompatible modes): the straight
+// cantilever (6 x 1, aspect ratio 5) under in-plane tip shear is within 5% of 0.1081 (table: 3% low;
+// the plain bilinear membrane gives 9% of it).
+TEST(ShellBenchmark, CantileverInPlaneShear)
+{
+  EXPECT_NEAR(Cantilever(1, ElementOptions{}) / 0.1081, 1.0, 0.05);
+}
+
+// Requirement: pinched cylinder, 1/8 model 32x32: radial displacement under the load 1.8248e-5
+// within 2% (table: 16x16 is 7% low, 32x32 1.1% low; finer meshes overshoot by up to 1.6%, towards the
+// shear-deformable value 1.8541e-5, as a point load on a Reissner-Mindlin shell should).
 TEST(ShellBenchmark, PinchedCylinder)
 {
-  EXPECT_NEAR(PinchedCylinder(16, kDefaultDrill) / kPinchedCylinder, 1.0, 0.08);
+  EXPECT_NEAR(PinchedCylinder(32, ElementOptions{}) / kPinchedCylinder, 1.0, 0.02);
 }
 
 // Requirement: pinched hemisphere with 18 deg hole, quarter model 16x16: radial displacement 0.094
-// within the tolerance the table supports (see docs/shell.md).
+// within 2% (table: every mesh from 8x8 is within 2%, 16x16 is 1.0% low, inside the quoted
+// converged range 0.0924-0.093).
 TEST(ShellBenchmark, PinchedHemisphere)
 {
-  EXPECT_NEAR(Hemisphere(16, kDefaultDrill) / kHemisphere, 1.0, 0.03);
+  const double w = Hemisphere(16, ElementOptions{});
+  EXPECT_NEAR(w / kHemisphere, 1.0, 0.02);
+  EXPECT_GE(w, 0.0924);
+}
+
+// Requirement: the default drilling factor lies on the plateau where the answers do not depend on it:
+// a factor 10 either way changes the roof and the hemisphere (16x16) by less than 0.5%.
+TEST(ShellBenchmark, DrillingFactorPlateau)
+{
+  for (auto run : {+[](double d) { return ScordelisLo(16, Drill(d)); }, +[](double d) { return Hemisphere(16, Drill(d)); }}) {
+    const double mid = run(kDefaultDrill);
+    EXPECT_NEAR(run(kDefaultDrill / 10) / mid, 1.0, 0.005);
+    EXPECT_NEAR(run(kDefaultDrill * 10) / mid, 1.0, 0.005);
+  }
 }
 
 // ===================================================================================================
@@ -536,40 +665,81 @@ namespace {
 
 int PrintTables()
 {
-  const int meshes[] = {4, 8, 16, 32};
+  const int meshes[] = {4, 8, 16, 32, 64};
   std::printf("# Shell element convergence (generated by scripts/shell-convergence)\n\n");
-  std::printf("Flat-facet MITC4, drilling factor %g (lib/shell/, docs/shell.md). n = elements per side of the\n"
-              "symmetry model; value = the displacement the reference quotes; ratio = value / reference.\n\n",
+  std::printf("Flat-facet MITC4 with incompatible membrane modes (QM6), drilling factor %g (lib/shell/,\n"
+              "docs/shell.md); the last column is the plain bilinear membrane (Membrane::Bilinear). n = elements\n"
+              "per side of the symmetry model; value = the displacement the reference quotes; ratio = value /\n"
+              "reference.\n\n",
               kDefaultDrill);
   struct Bench {
     const char *name, *model, *what;
     double ref;
-    std::function<double(int)> run;
+    std::function<double(int, ElementOptions)> run;
   };
   const Bench benches[] = {
-      {"Scordelis-Lo roof", "quarter", "vertical displacement, mid free edge", kScordelisLo, [](int n) { return ScordelisLo(n, kDefaultDrill); }},
-      {"Pinched cylinder", "one eighth", "radial displacement under the load", kPinchedCylinder, [](int n) { return PinchedCylinder(n, kDefaultDrill); }},
-      {"Pinched hemisphere", "quarter", "radial displacement under the load", kHemisphere, [](int n) { return Hemisphere(n, kDefaultDrill); }},
-      {"Square plate, simply supported", "quarter", "w_c D/(q a^4), a/t = 100", kPlateSS, [](int n) { return SquarePlate(n, false); }},
-      {"Square plate, clamped", "quarter", "w_c D/(q a^4), a/t = 100", kPlateClamped, [](int n) { return SquarePlate(n, true); }},
+      {"Scordelis-Lo roof", "quarter", "vertical displacement, mid free edge", kScordelisLo, [](int n, ElementOptions o) { return ScordelisLo(n, o); }},
+      {"Pinched cylinder", "one eighth", "radial displacement under the load", kPinchedCylinder, [](int n, ElementOptions o) { return PinchedCylinder(n, o); }},
+      {"Pinched hemisphere", "quarter", "radial displacement under the load", kHemisphere, [](int n, ElementOptions o) { return Hemisphere(n, o); }},
+      {"Square plate, simply supported", "quarter", "w_c D/(q a^4), a/t = 100", kPlateSS, [](int n, ElementOptions o) { return SquarePlate(n, false, o); }},
+      {"Square plate, clamped", "quarter", "w_c D/(q a^4), a/t = 100", kPlateClamped, [](int n, ElementOptions o) { return SquarePlate(n, true, o); }},
   };
+  const ElementOptions bilinear = Drill(kDefaultDrill, Membrane::Bilinear);
   for (const Bench &b : benches) {
-    std::printf("## %s (%s model; %s; reference %g)\n\n| n | dofs | value | ratio |\n|---|---|---|---|\n", b.name, b.model, b.what, b.ref);
+    std::printf("## %s (%s model; %s; reference %g)\n\n| n | dofs | value | ratio | bilinear membrane: ratio |\n|---|---|---|---|---|\n", b.name, b.model, b.what, b.ref);
     for (int n : meshes) {
-      const double v = b.run(n);
-      std::printf("| %d | %d | %.6g | %.4f |\n", n, 6 * (n + 1) * (n + 1), v, v / b.ref);
+      const double v = b.run(n, ElementOptions{});
+      std::printf("| %d | %d | %.6g | %.4f | %.4f |\n", n, 6 * (n + 1) * (n + 1), v, v / b.ref, b.run(n, bilinear) / b.ref);
     }
     std::printf("\n");
   }
-  std::printf("## Drilling factor (n = 16): ratio to the reference\n\n| drill | Scordelis-Lo | pinched cylinder | hemisphere |\n|---|---|---|---|\n");
-  for (double d : {1e-6, 1e-4, 1e-3, 1e-2, 1e-1, 1.0})
-    std::printf("| %g | %.4f | %.4f | %.4f |\n", d, ScordelisLo(16, d) / kScordelisLo, PinchedCylinder(16, d) / kPinchedCylinder,
-                Hemisphere(16, d) / kHemisphere);
-  std::printf("\n## Symmetry model against the full model (Scordelis-Lo)\n\n| n (quarter) | quarter | full (2n x 2n) | relative difference |\n|---|---|---|---|\n");
-  for (int n : {4, 8, 16}) {
-    const double q = ScordelisLo(n, kDefaultDrill), f = ScordelisLo(n, kDefaultDrill, true);
-    std::printf("| %d | %.8g | %.8g | %.1e |\n", n, q, f, std::fabs(q - f) / std::fabs(f));
+  for (int n : {16, 64}) {
+    std::printf("## Drilling factor (n = %d): ratio to the reference\n\n| drill | Scordelis-Lo | pinched cylinder | hemisphere |\n|---|---|---|---|\n", n);
+    for (double d : {1e-6, 1e-4, 1e-3, 1e-2, 1e-1, 1.0})
+      std::printf("| %g | %.4f | %.4f | %.4f |\n", d, ScordelisLo(n, Drill(d)) / kScordelisLo, PinchedCylinder(n, Drill(d)) / kPinchedCylinder,
+                  Hemisphere(n, Drill(d)) / kHemisphere);
+    std::printf("\n");
   }
+  std::printf("## Symmetry models against full models\n\n| problem | n | symmetry model | full model | relative difference |\n|---|---|---|---|---|\n");
+  for (int n : {4, 8, 16}) {
+    const double q = ScordelisLo(n, ElementOptions{}), f = ScordelisLo(n, ElementOptions{}, {true});
+    std::printf("| Scordelis-Lo, quarter / full (2n x 2n) | %d | %.8g | %.8g | %.1e |\n", n, q, f, std::fabs(q - f) / std::fabs(f));
+  }
+  for (int n : {4, 8, 16}) {
+    const double q = ScordelisLo(n, ElementOptions{}, {false, true}), f = ScordelisLo(n, ElementOptions{}, {true});
+    std::printf("| Scordelis-Lo, quarter with theta_z free on the crown plane (wrong) / full | %d | %.8g | %.8g | %.1e |\n", n, q, f, std::fabs(q - f) / std::fabs(f));
+  }
+  for (int n : {4, 8}) {
+    const double q = PinchedCylinder(n, ElementOptions{}), f = PinchedCylinder(n, ElementOptions{}, true);
+    std::printf("| pinched cylinder, 1/8 / closed (2n x 4n) | %d | %.8g | %.8g | %.1e |\n", n, q, f, std::fabs(q - f) / std::fabs(f));
+  }
+  for (int n : {4, 8}) {
+    const double q = Hemisphere(n, ElementOptions{}), f = Hemisphere(n, ElementOptions{}, true);
+    std::printf("| hemisphere, quarter / whole (n x 4n) | %d | %.8g | %.8g | %.1e |\n", n, q, f, std::fabs(q - f) / std::fabs(f));
+  }
+  std::printf("\n## Scordelis-Lo roof on irregular meshes (every element warped)\n\n"
+              "Interior nodes moved along the surface by up to 0.3 of an element in each direction.\n\n"
+              "| n | value | ratio | regular mesh ratio |\n|---|---|---|---|\n");
+  for (int n : meshes) {
+    const double v = ScordelisLo(n, ElementOptions{}, {false, false, 0.3});
+    std::printf("| %d | %.6g | %.4f | %.4f |\n", n, v, v / kScordelisLo, ScordelisLo(n, ElementOptions{}) / kScordelisLo);
+  }
+  std::printf("\n## Straight cantilever (6 x 1 regular elements; a record, not a test)\n\n| load | reference | value | ratio | bilinear membrane: ratio |\n|---|---|---|---|---|\n");
+  const char *cname[] = {"extension", "in-plane shear", "out-of-plane shear", "twist (rotation)"};
+  const double cref[] = {3.0e-5, 0.1081, 0.4321, 0.03208};
+  for (int k = 0; k < 4; ++k) {
+    const double v = Cantilever(k, ElementOptions{});
+    std::printf("| %s | %g | %.5g | %.4f | %.4f |\n", cname[k], cref[k], v, v / cref[k], Cantilever(k, bilinear) / cref[k]);
+  }
+  std::printf("\n## Exact solutions: largest relative error (round-off)\n\n| test | error |\n|---|---|\n");
+  const ShellMaterial iso = IsotropicMaterial(1e6, 0.25, 0.001), lam = LaminateMaterial({Carbon(0), Carbon(45), Carbon(90)});
+  std::printf("| membrane patch test (MacNeal-Harder patch, tilted in 3D) | %.1e |\n", PatchTestError(iso, {1e-3, -4e-4, 6e-4}, {0, 0, 0}, 2e-4));
+  std::printf("| bending patch test (constant curvature) | %.1e |\n", PatchTestError(iso, {0, 0, 0}, {1e-3, 5e-4, -8e-4}, 0));
+  std::printf("| coupled patch test, [0/45/90] laminate | %.1e |\n", PatchTestError(lam, {1e-3, -4e-4, 6e-4}, {1e-2, 5e-3, -8e-3}, 1e-4));
+  const ShellMaterial cross = LaminateMaterial({Carbon(0), Carbon(90)}), angle = LaminateMaterial({Carbon(30), Carbon(-45), Carbon(0)});
+  std::printf("| [0/90] free plate, Nx = 10, against CLT | %.1e |\n", LaminatePlateError(cross, 10, 0, 0));
+  std::printf("| [0/90] free plate, Mx = 1, against CLT | %.1e |\n", LaminatePlateError(cross, 0, 0, 1));
+  std::printf("| [30/-45/0] free plate, Nx, Nxy, Mx, against CLT | %.1e |\n", LaminatePlateError(angle, 10, 3, 1));
   return 0;
 }
 

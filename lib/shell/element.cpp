@@ -1,6 +1,7 @@
 // The four-node flat-facet MITC4 shell element (see shell.hpp and docs/shell.md).
 #include "shell/shell.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -179,16 +180,74 @@ ElementFrame MakeElementFrame(const Nodes &X)
   return f;
 }
 
-void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, ElementMatrix &K)
+namespace {
+
+// The incompatible-mode membrane rows (QM6, Wilson-Taylor): modes 1 - xi^2 and 1 - eta^2 for u and v,
+// amplitudes (a1u, a2u, a1v, a2v). Derivatives use the centre Jacobian J0 and are scaled by
+// det J0 / det J (Taylor's correction), so that their integral over the element vanishes and the
+// patch test passes on any quadrilateral.
+void IncompatibleRows(const ElementFrame &f, double xi, double eta, double detJ, double G[3][4])
 {
-  if (!(drill >= 0) || !std::isfinite(drill))
-    throw std::invalid_argument("Shell element: drilling factor = " + std::to_string(drill) + " must be >= 0");
-  const ElementFrame f = MakeElementFrame(X);
+  const Shape s0 = ShapeAt(0, 0);
+  double J0[2][2] = {};
+  for (int i = 0; i < 4; ++i) {
+    J0[0][0] += s0.dxi[i] * f.x[i];
+    J0[0][1] += s0.dxi[i] * f.y[i];
+    J0[1][0] += s0.deta[i] * f.x[i];
+    J0[1][1] += s0.deta[i] * f.y[i];
+  }
+  const double d0 = J0[0][0] * J0[1][1] - J0[0][1] * J0[1][0], r = d0 / detJ;
+  const double dP[2][2] = {{-2 * xi, 0}, {0, -2 * eta}}; // mode k: (d/dxi, d/deta)
+  double dx[2], dy[2];
+  for (int k = 0; k < 2; ++k) {
+    dx[k] = r * (J0[1][1] * dP[k][0] - J0[0][1] * dP[k][1]) / d0;
+    dy[k] = r * (-J0[1][0] * dP[k][0] + J0[0][0] * dP[k][1]) / d0;
+  }
+  const double rows[3][4] = {{dx[0], dx[1], 0, 0}, {0, 0, dy[0], dy[1]}, {dy[0], dy[1], dx[0], dx[1]}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) G[i][j] = rows[i][j];
+}
+
+// Solves the 4x4 system A x = b in place (A symmetric positive definite here), for nrhs columns of b.
+void Solve4(double A[4][4], double *b, int nrhs)
+{
+  for (int c = 0; c < 4; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < 4; ++r)
+      if (std::fabs(A[r][c]) > std::fabs(A[piv][c])) piv = r;
+    if (!(std::fabs(A[piv][c]) > 0)) throw std::invalid_argument("Shell element: singular incompatible-mode stiffness (zero membrane stiffness?)");
+    for (int k = 0; k < 4; ++k) std::swap(A[c][k], A[piv][k]);
+    for (int k = 0; k < nrhs; ++k) std::swap(b[4 * k + c], b[4 * k + piv]);
+    for (int r = c + 1; r < 4; ++r) {
+      const double f = A[r][c] / A[c][c];
+      for (int k = c; k < 4; ++k) A[r][k] -= f * A[c][k];
+      for (int k = 0; k < nrhs; ++k) b[4 * k + r] -= f * b[4 * k + c];
+    }
+  }
+  for (int k = 0; k < nrhs; ++k)
+    for (int r = 3; r >= 0; --r) {
+      double v = b[4 * k + r];
+      for (int j = r + 1; j < 4; ++j) v -= A[r][j] * b[4 * k + j];
+      b[4 * k + r] = v / A[r][r];
+    }
+}
+
+// The local stiffness (element frame, flat nodes) KL, and for the incompatible membrane the blocks
+// Kau (4 x 24) and Kaa (4 x 4) before condensation.
+struct LocalStiffness {
+  double KL[24][24] = {}, Kau[4][24] = {}, Kaa[4][4] = {};
+};
+
+void Local(const ElementFrame &f, const ShellMaterial &mat, const ElementOptions &o, LocalStiffness &S)
+{
+  if (!(o.drill >= 0) || !std::isfinite(o.drill))
+    throw std::invalid_argument("Shell element: drilling factor = " + std::to_string(o.drill) + " must be >= 0");
   const ShellMaterial m = ElementSection(f, mat);
-  const double gamma = drill * (m.A[0] + m.A[4] - 2 * m.A[1] + 4 * m.A[8]) / 8;
-  double KL[24][24] = {};
+  const double gamma = o.drill * (m.A[0] + m.A[4] - 2 * m.A[1] + 4 * m.A[8]) / 8;
+  const bool qm6 = o.membrane == Membrane::Incompatible;
   for (int g = 0; g < 4; ++g) {
-    const BMatrix B = BAt(f, kXi[g] * kGauss, kEta[g] * kGauss);
+    const double xi = kXi[g] * kGauss, eta = kEta[g] * kGauss;
+    const BMatrix B = BAt(f, xi, eta);
     const double w = B.detJ; // Gauss weights are 1
     // Generalised stresses per unit dof: S = C E, with E = [m; b] (6 rows) and s (2 rows).
     double NM[6][24] = {}, Q[2][24] = {};
@@ -206,12 +265,46 @@ void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, El
         double v = gamma * B.d[a] * B.d[b];
         for (int i = 0; i < 3; ++i) v += B.m[i][a] * NM[i][b] + B.b[i][a] * NM[i + 3][b];
         for (int i = 0; i < 2; ++i) v += B.s[i][a] * Q[i][b];
-        KL[a][b] += w * v;
+        S.KL[a][b] += w * v;
+      }
+    if (qm6) {
+      double G[3][4];
+      IncompatibleRows(f, xi, eta, B.detJ, G);
+      for (int a = 0; a < 4; ++a) {
+        for (int b = 0; b < 24; ++b)
+          for (int i = 0; i < 3; ++i) S.Kau[a][b] += w * G[i][a] * NM[i][b]; // G^T (A Bm + B Bb)
+        for (int b = 0; b < 4; ++b)
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) S.Kaa[a][b] += w * G[i][a] * m.A[3 * i + j] * G[j][b];
+      }
+    }
+  }
+  if (qm6) { // static condensation: KL -= Kau^T Kaa^-1 Kau
+    double X[24 * 4], A[4][4];
+    for (int b = 0; b < 24; ++b)
+      for (int a = 0; a < 4; ++a) X[4 * b + a] = S.Kau[a][b];
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) A[i][j] = S.Kaa[i][j];
+    Solve4(A, X, 24);
+    for (int a = 0; a < 24; ++a)
+      for (int b = 0; b < 24; ++b) {
+        double v = 0;
+        for (int k = 0; k < 4; ++k) v += S.Kau[k][a] * X[4 * b + k];
+        S.KL[a][b] -= v;
       }
   }
   // Symmetrise (the products above are symmetric up to round-off).
   for (int a = 0; a < 24; ++a)
-    for (int b = a + 1; b < 24; ++b) KL[a][b] = KL[b][a] = 0.5 * (KL[a][b] + KL[b][a]);
+    for (int b = a + 1; b < 24; ++b) S.KL[a][b] = S.KL[b][a] = 0.5 * (S.KL[a][b] + S.KL[b][a]);
+}
+
+} // namespace
+
+void ElementStiffness(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K)
+{
+  const ElementFrame f = MakeElementFrame(X);
+  LocalStiffness S;
+  Local(f, mat, options, S);
   // K = T^T KL T, node block by node block.
   const auto T = Transforms(f);
   for (int p = 0; p < 4; ++p)
@@ -219,7 +312,7 @@ void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, El
       double tmp[6][6] = {};
       for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j)
-          for (int k = 0; k < 6; ++k) tmp[i][j] += KL[6 * p + i][6 * q + k] * T[q][6 * k + j];
+          for (int k = 0; k < 6; ++k) tmp[i][j] += S.KL[6 * p + i][6 * q + k] * T[q][6 * k + j];
       for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) {
           double v = 0;
@@ -227,6 +320,13 @@ void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, El
           K[24 * (6 * p + i) + 6 * q + j] = v;
         }
     }
+}
+
+void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, ElementMatrix &K)
+{
+  ElementOptions o;
+  o.drill = drill;
+  ElementStiffness(X, mat, o, K);
 }
 
 void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F)
@@ -263,7 +363,8 @@ void ElementPressure(const Nodes &X, double p, ElementVector &F)
   }
 }
 
-GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double xi, double eta)
+GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options,
+                                  const ElementVector &u, double xi, double eta)
 {
   const ElementFrame f = MakeElementFrame(X);
   const auto T = Transforms(f);
@@ -281,7 +382,28 @@ GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double
     for (int i = 0; i < 2; ++i) e.shear[i] += B.s[i][k] * ul[k];
     e.drill += B.d[k] * ul[k];
   }
+  if (options.membrane == Membrane::Incompatible) { // recover the condensed amplitudes
+    LocalStiffness S;
+    Local(f, mat, options, S);
+    double alpha[4] = {}, A[4][4];
+    for (int a = 0; a < 4; ++a) {
+      for (int k = 0; k < 24; ++k) alpha[a] -= S.Kau[a][k] * ul[k];
+      for (int b = 0; b < 4; ++b) A[a][b] = S.Kaa[a][b];
+    }
+    Solve4(A, alpha, 1);
+    double G[3][4];
+    IncompatibleRows(f, xi, eta, B.detJ, G);
+    for (int i = 0; i < 3; ++i)
+      for (int a = 0; a < 4; ++a) e.membrane[i] += G[i][a] * alpha[a];
+  }
   return e;
+}
+
+GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double xi, double eta)
+{
+  ElementOptions o;
+  o.membrane = Membrane::Bilinear; // no material: the nodal (compatible) part only
+  return ElementStrains(X, ShellMaterial{}, o, u, xi, eta);
 }
 
 } // namespace boltnet::shell

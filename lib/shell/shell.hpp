@@ -70,12 +70,28 @@ struct ElementFrame {
 };
 ElementFrame MakeElementFrame(const Nodes &X);
 
-/* Default drilling factor: the drilling penalty is gamma = drill * G_m, with G_m the invariant
-   membrane shear stiffness (A11 + A22 - 2 A12 + 4 A66) / 8 (= G t for an isotropic shell). */
-constexpr double kDefaultDrill = 1e-3;
+/* Default drilling factor: the Hughes-Brezzi penalty is gamma = drill * G_m, with G_m the invariant
+   membrane shear stiffness (A11 + A22 - 2 A12 + 4 A66) / 8 (= G t for an isotropic shell). 1e-2 lies
+   on the plateau where the benchmarks do not depend on it (docs/shell-convergence.md): below about
+   1e-3 the normal rotation is nearly free and curved shells become too soft as the mesh is refined;
+   near 1 the penalty stiffens coarse meshes of curved shells. */
+constexpr double kDefaultDrill = 1e-2;
+
+/* Membrane interpolation: Bilinear (the plain bilinear membrane of MITC4), or Incompatible: bilinear
+   enriched with the Wilson-Taylor incompatible modes 1 - xi^2, 1 - eta^2 (QM6, condensed inside the
+   element, Taylor's correction so that the patch test passes on any quadrilateral), which removes
+   the bilinear membrane's locking in in-plane bending. */
+enum class Membrane { Bilinear, Incompatible };
+
+struct ElementOptions {
+  double drill = kDefaultDrill; // >= 0, scales the Hughes-Brezzi drilling penalty
+  Membrane membrane = Membrane::Incompatible;
+};
 
 /* 24x24 element stiffness in global coordinates, dof order (u_x, u_y, u_z, th_x, th_y, th_z) per
-   node. drill >= 0 scales the Hughes-Brezzi drilling term (kDefaultDrill recommended). */
+   node. Throws std::invalid_argument on a degenerate element or a negative drilling factor. */
+void ElementStiffness(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K);
+/* The same with the default options but the given drilling factor. */
 void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, ElementMatrix &K);
 
 /* Consistent nodal forces for a force per unit area q (global vector: self weight, a distributed
@@ -87,13 +103,17 @@ void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F);
 void ElementPressure(const Nodes &X, double p, ElementVector &F);
 
 /* Generalised strains at (xi, eta) in the element frame (e1, e2) from global nodal displacements:
-   membrane strain, curvature, MITC4 transverse shear, and the drilling defect theta_z - omega
+   membrane strain (with the condensed incompatible modes when options.membrane is Incompatible),
+   curvature, MITC4 transverse shear, and the drilling defect theta_z - omega
    (omega = (dv/dx - du/dy) / 2). */
 struct GeneralisedStrains {
   std::array<double, 3> membrane, curvature;
   std::array<double, 2> shear;
   double drill;
 };
+GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options,
+                                  const ElementVector &u, double xi, double eta);
+/* The nodal (compatible, bilinear) part only: no material needed. */
 GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double xi, double eta);
 
 } // namespace boltnet::shell
