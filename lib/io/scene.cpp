@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 namespace boltnet {
 namespace {
@@ -171,23 +172,48 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, Bolt
   PetscFunctionReturn(0);
 }
 
-// An isotropic shell section from -material_<name>_E, _nu, _t.
+// A shell section from options: isotropic (-material_<name>_E, _nu, _t) or a laminate given ply by
+// ply (-material_<name>_layup angles from the bottom, -material_<name>_ply_t, and the ply moduli
+// -material_<name>_E1, _E2, _nu12, _G12, _G13, _G23), by classical lamination theory.
 PetscErrorCode MaterialFromOptions(MPI_Comm comm, const std::string &name, shell::ShellMaterial *mat)
 {
-  PetscReal         E = 0, nu = 0.3, t = 0;
+  const char       *kinds[] = {"isotropic", "laminate"};
+  PetscInt          kind    = 0, nply = 256;
+  PetscReal         E = 0, nu = 0.3, t = 0, angles[256], tply = 0, E1 = 0, E2 = 0, nu12 = 0.3, G12 = 0, G13 = 0, G23 = 0;
+  PetscBool         hasLayup = PETSC_FALSE;
   const std::string prefix = "material_" + name + "_";
-  const std::string title  = "Material '" + name + "' (isotropic shell section; units: MPa, mm)";
+  const std::string title  = "Material '" + name + "' (shell section; units: MPa, mm, degrees)";
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
-  PetscCall(PetscOptionsReal("-E", "Young's modulus (MPa)", "", E, &E, nullptr));
-  PetscCall(PetscOptionsReal("-nu", "Poisson's ratio", "", nu, &nu, nullptr));
-  PetscCall(PetscOptionsReal("-t", "Shell thickness (mm)", "", t, &t, nullptr));
+  PetscCall(PetscOptionsEList("-type", "Section: isotropic, or a laminate given ply by ply", "", kinds, 2, kinds[0], &kind, nullptr));
+  if (kind == 0) {
+    PetscCall(PetscOptionsReal("-E", "Young's modulus (MPa)", "", E, &E, nullptr));
+    PetscCall(PetscOptionsReal("-nu", "Poisson's ratio", "", nu, &nu, nullptr));
+    PetscCall(PetscOptionsReal("-t", "Shell thickness (mm)", "", t, &t, nullptr));
+  } else {
+    PetscCall(PetscOptionsRealArray("-layup", "Ply angles from the bottom ply up (degrees, comma separated)", "", angles, &nply, &hasLayup));
+    PetscCall(PetscOptionsReal("-ply_t", "Ply thickness (mm)", "", tply, &tply, nullptr));
+    PetscCall(PetscOptionsReal("-E1", "Ply modulus along the fibres (MPa)", "", E1, &E1, nullptr));
+    PetscCall(PetscOptionsReal("-E2", "Ply modulus across the fibres (MPa)", "", E2, &E2, nullptr));
+    PetscCall(PetscOptionsReal("-nu12", "Ply major Poisson's ratio", "", nu12, &nu12, nullptr));
+    PetscCall(PetscOptionsReal("-G12", "Ply in-plane shear modulus (MPa)", "", G12, &G12, nullptr));
+    PetscCall(PetscOptionsReal("-G13", "Ply transverse shear modulus 13 (MPa)", "", G13, &G13, nullptr));
+    PetscCall(PetscOptionsReal("-G23", "Ply transverse shear modulus 23 (MPa)", "", G23, &G23, nullptr));
+  }
   PetscOptionsEnd();
-  PetscCheck(E > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%sE = %g must be > 0", name.c_str(), prefix.c_str(), (double)E);
-  PetscCheck(t > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%st = %g must be > 0", name.c_str(), prefix.c_str(), (double)t);
-  PetscCheck(nu > -1 && nu < 0.5, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%snu = %g must lie in (-1, 0.5)", name.c_str(), prefix.c_str(), (double)nu);
+  if (kind == 0) {
+    PetscCheck(E > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%sE = %g must be > 0", name.c_str(), prefix.c_str(), (double)E);
+    PetscCheck(t > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%st = %g must be > 0", name.c_str(), prefix.c_str(), (double)t);
+    PetscCheck(nu > -1 && nu < 0.5, comm, PETSC_ERR_USER_INPUT, "Material '%s': -%snu = %g must lie in (-1, 0.5)", name.c_str(), prefix.c_str(), (double)nu);
+  } else PetscCheck(hasLayup && nply > 0, comm, PETSC_ERR_USER_INPUT, "Material '%s' is a laminate with no plies: give -%slayup (ply angles, e.g. 0,45,-45,90)", name.c_str(), prefix.c_str());
+  std::vector<shell::Ply> plies;
+  for (PetscInt i = 0; kind == 1 && i < nply; ++i) plies.push_back(shell::Ply{angles[i], tply, E1, E2, nu12, G12, G13, G23});
   PetscCall(Guard(comm, [&] {
-    *mat = shell::IsotropicMaterial(E, nu, t);
+    try {
+      *mat = kind == 0 ? shell::IsotropicMaterial(E, nu, t) : shell::LaminateMaterial(plies);
+    } catch (const std::invalid_argument &e) {
+      throw std::invalid_argument("Material '" + name + "' (options -" + prefix + "*): " + e.what());
+    }
     return PetscErrorCode(0);
   }));
   PetscFunctionReturn(0);
