@@ -86,12 +86,8 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(BoltnetAssemblyDestroy(&a));
 
   if (optionsLeft) { // -options_left: an option that nothing used is an error, not a warning
-    PetscInt n;
-    char   **names, **values;
-    PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
     std::string left;
-    for (PetscInt i = 0; i < n; ++i) left += std::string(" -") + names[i];
-    PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+    PetscCall(UnusedOptions(&left));
     if (!left.empty()) {
       PetscCall(PetscPrintf(comm, "boltnet: ERROR: option(s) given but never used:%s\n", left.c_str()));
       *exitcode = 2;

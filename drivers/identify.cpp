@@ -15,6 +15,7 @@ docs/identify.md. Bad input stops with a message naming it and a non-zero exit.\
 #include "identify/curve.hpp"
 #include "identify/fastener.hpp"
 #include "identify/options.hpp"
+#include "io/io.hpp"
 
 #include <boltnet.h>
 #include <petscsys.h>
@@ -131,12 +132,8 @@ PetscErrorCode Run(int *exitcode)
   if (hasCurve) PetscCall(CurveMode(comm, file, jointType));
   else PetscCall(GeometryMode(comm, jointType));
   if (optionsLeft) { // an option that nothing used is an error, as in the boltnet driver
-    PetscInt n;
-    char   **names, **values;
-    PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
     std::string left;
-    for (PetscInt i = 0; i < n; ++i) left += std::string(" -") + names[i];
-    PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+    PetscCall(UnusedOptions(&left));
     if (!left.empty()) {
       PetscCall(PetscPrintf(comm, "boltnet-identify: ERROR: option(s) given but never used:%s\n", left.c_str()));
       *exitcode = 2;

@@ -23,6 +23,9 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
 // Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
 // a misspelled boltnet option stops the run before it starts.
 PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);
+// The options that nothing used, as " -a -b" ("" when none): with -options_left the drivers make
+// them an error rather than PETSc's warning (Debian's PETSc otherwise ignores typos).
+PetscErrorCode UnusedOptions(std::string *names);
 
 // Results, written by rank 0 under dir.
 struct Output {

@@ -113,12 +113,33 @@ std::string Resolve(const Scene &s, const std::string &option, const std::string
   return s.dir + "/" + path;
 }
 
-// Options of one joint type, prefix joint_<type>_; -help lists them with defaults and units.
-PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, BoltnetJointParams *p, Scene *scene)
+// The macroelement's parameters as options, inside the joint type's options block.
+PetscErrorCode JointParamsOptions(PetscOptionItems *PetscOptionsObject, BoltnetJointParams *p)
 {
   const char *laws[] = {"spring", "contact", "friction"};
   PetscInt    law    = 0;
   PetscBool   set;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsEList("-law", "Macroelement law", "", laws, 3, laws[law], &law, &set));
+  p->law = static_cast<BoltnetLaw>(law);
+  PetscCall(PetscOptionsReal("-kn", "Axial stiffness along the bolt (N/mm)", "", p->kn, &p->kn, nullptr));
+  PetscCall(PetscOptionsReal("-kt", "In-plane stiffness (N/mm): spring kt, contact k before contact, friction ke while sticking", "", p->kt, &p->kt, nullptr));
+  PetscCall(PetscOptionsReal("-kr", "Rotational stiffness (N mm/rad), high for a rigid rotation", "", p->kr, &p->kr, nullptr));
+  PetscCall(PetscOptionsReal("-kc", "Stiffness after the clearance closes (N/mm): contact k', friction bearing kc", "", p->kc, &p->kc, nullptr));
+  PetscCall(PetscOptionsReal("-kg", "Friction: regularisation stiffness while sliding (N/mm); 0 is pure Coulomb", "", p->kg, &p->kg, nullptr));
+  PetscCall(PetscOptionsReal("-gap", "Clearance j between bolt and hole, radius in the joint plane (mm)", "", p->gap, &p->gap, nullptr));
+  PetscCall(PetscOptionsReal("-mu", "Friction coefficient", "", p->mu, &p->mu, nullptr));
+  PetscCall(PetscOptionsReal("-nf", "Friction interfaces: 1 single lap, 2 double lap", "", p->nf, &p->nf, nullptr));
+  PetscCall(PetscOptionsReal("-pretension", "Bolt clamp force Pc (N); G = mu nf Pc", "", p->pretension, &p->pretension, nullptr));
+  PetscCall(PetscOptionsReal("-clamp_coupling", "phi in G = mu nf max(0, Pc - phi F_n); 0 is the paper's constant G", "", p->clamp_coupling, &p->clamp_coupling, nullptr));
+  PetscCall(PetscOptionsReal("-offset_t1", "Initial bolt offset in the hole along t1 (mm)", "", p->offset[0], &p->offset[0], nullptr));
+  PetscCall(PetscOptionsReal("-offset_t2", "Initial bolt offset in the hole along t2 (mm)", "", p->offset[1], &p->offset[1], nullptr));
+  PetscFunctionReturn(0);
+}
+
+// Options of one joint type, prefix joint_<type>_; -help lists them with defaults and units.
+PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, BoltnetJointParams *p, Scene *scene)
+{
   const std::string prefix = "joint_" + type + "_";
   const std::string title  = "Joint type '" + type + "' (units: N, mm, N/mm, N mm/rad)";
   PetscFunctionBeginUser;
@@ -128,6 +149,7 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, Bolt
   PetscInt    source    = 0;
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
   PetscCall(PetscOptionsEList("-from", "Where the macroelement's parameters come from: the options below, or the fastener geometry (-joint_<type>_fastener_*, docs/identify.md)", "", sources, 2, sources[0], &source, nullptr));
+  if (source == 0) PetscCall(JointParamsOptions(PetscOptionsObject, p));
   PetscOptionsEnd();
   if (source == 1) {
     identify::FastenerOptions o;
@@ -147,22 +169,6 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, Bolt
     PetscCall(PetscInfo(nullptr, "joint type %s identified from its geometry: kc %g gap %g pretension %g\n", type.c_str(), q.kc, q.gap, q.pretension));
     PetscFunctionReturn(0);
   }
-  PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");
-  PetscCall(PetscOptionsEList("-law", "Macroelement law", "", laws, 3, laws[law], &law, &set));
-  p->law = static_cast<BoltnetLaw>(law);
-  PetscCall(PetscOptionsReal("-kn", "Axial stiffness along the bolt (N/mm)", "", p->kn, &p->kn, nullptr));
-  PetscCall(PetscOptionsReal("-kt", "In-plane stiffness (N/mm): spring kt, contact k before contact, friction ke while sticking", "", p->kt, &p->kt, nullptr));
-  PetscCall(PetscOptionsReal("-kr", "Rotational stiffness (N mm/rad), high for a rigid rotation", "", p->kr, &p->kr, nullptr));
-  PetscCall(PetscOptionsReal("-kc", "Stiffness after the clearance closes (N/mm): contact k', friction bearing kc", "", p->kc, &p->kc, nullptr));
-  PetscCall(PetscOptionsReal("-kg", "Friction: regularisation stiffness while sliding (N/mm); 0 is pure Coulomb", "", p->kg, &p->kg, nullptr));
-  PetscCall(PetscOptionsReal("-gap", "Clearance j between bolt and hole, radius in the joint plane (mm)", "", p->gap, &p->gap, nullptr));
-  PetscCall(PetscOptionsReal("-mu", "Friction coefficient", "", p->mu, &p->mu, nullptr));
-  PetscCall(PetscOptionsReal("-nf", "Friction interfaces: 1 single lap, 2 double lap", "", p->nf, &p->nf, nullptr));
-  PetscCall(PetscOptionsReal("-pretension", "Bolt clamp force Pc (N); G = mu nf Pc", "", p->pretension, &p->pretension, nullptr));
-  PetscCall(PetscOptionsReal("-clamp_coupling", "phi in G = mu nf max(0, Pc - phi F_n); 0 is the paper's constant G", "", p->clamp_coupling, &p->clamp_coupling, nullptr));
-  PetscCall(PetscOptionsReal("-offset_t1", "Initial bolt offset in the hole along t1 (mm)", "", p->offset[0], &p->offset[0], nullptr));
-  PetscCall(PetscOptionsReal("-offset_t2", "Initial bolt offset in the hole along t2 (mm)", "", p->offset[1], &p->offset[1], nullptr));
-  PetscOptionsEnd();
   Params q;
   q.law = static_cast<Law>(p->law);
   q.kn = p->kn, q.kt = p->kt, q.kr = p->kr, q.kc = p->kc, q.kg = p->kg, q.gap = p->gap, q.mu = p->mu, q.nf = p->nf;
@@ -386,6 +392,18 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
     if (HasColumn(bcs, "set")) PetscCall(Cell(comm, bcs, r, "set", &set));
     PetscCall(BoltnetAssemblyAddBCOnSet(a, patch, set.c_str(), dofs.at(dof), kinds.at(kind), value));
   }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode UnusedOptions(std::string *left)
+{
+  PetscInt n;
+  char   **names, **values;
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
+  left->clear();
+  for (PetscInt i = 0; i < n; ++i) *left += std::string(" -") + names[i];
+  PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscFunctionReturn(0);
 }
 
