@@ -4,6 +4,7 @@
 #include "mesh/mesh.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 
 namespace boltnet {
@@ -261,6 +262,22 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
     PetscCheck(degree[i] > 0, a->comm, PETSC_ERR_USER_INPUT, "Patch %" PetscInt_FMT " is not joined to anything: every patch needs at least one joint", a->patches[i].id);
   for (const BCDesc &bc : a->bcs)
     PetscCheck(index.count(bc.patch), a->comm, PETSC_ERR_USER_INPUT, "A boundary condition names patch %" PetscInt_FMT " which does not exist", bc.patch);
+  // Every group of patches joined by joints needs a prescribed displacement somewhere, else it can
+  // move as a rigid body and the model is singular (issue 3 item 8). Partial supports are not
+  // checked here; MUMPS reports what is left as a failed factorisation.
+  {
+    std::vector<PetscInt> group(npatch);
+    for (PetscInt i = 0; i < npatch; ++i) group[i] = i;
+    std::function<PetscInt(PetscInt)> root = [&](PetscInt i) { return group[i] == i ? i : group[i] = root(group[i]); };
+    for (size_t k = 0; k < edgelist.size(); k += 2) group[root(edgelist[k])] = root(edgelist[k + 1]);
+    std::vector<char> supported(npatch, 0);
+    for (const BCDesc &bc : a->bcs)
+      if (bc.kind != BOLTNET_BC_FORCE) supported[root(index[bc.patch])] = 1;
+    std::string free;
+    for (PetscInt i = 0; i < npatch; ++i)
+      if (!supported[root(i)]) free += (free.empty() ? "" : ", ") + std::to_string(a->patches[i].id);
+    PetscCheck(free.empty(), a->comm, PETSC_ERR_USER_INPUT, "Patch(es) %s and the joints between them have no fixed or prescribed dof: the model is singular (a rigid-body motion); fix or prescribe a dof of one of them", free.c_str());
+  }
   // Joints on shell patches attach to a joint node of their own, tied to the footprint nodes.
   for (JointComp &j : a->joints)
     for (int side = 0; side < 2; ++side) {
