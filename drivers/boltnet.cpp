@@ -85,14 +85,7 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(OutputClose(&out));
   PetscCall(BoltnetAssemblyDestroy(&a));
 
-  if (optionsLeft) { // -options_left: an option that nothing used is an error, not a warning
-    std::string left;
-    PetscCall(UnusedOptions(&left));
-    if (!left.empty()) {
-      PetscCall(PetscPrintf(comm, "boltnet: ERROR: option(s) given but never used:%s\n", left.c_str()));
-      *exitcode = 2;
-    }
-  }
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet", exitcode)); // an error, not a warning
   PetscFunctionReturn(0);
 }
 

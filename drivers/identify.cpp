@@ -131,14 +131,7 @@ PetscErrorCode Run(int *exitcode)
   }
   if (hasCurve) PetscCall(CurveMode(comm, file, jointType));
   else PetscCall(GeometryMode(comm, jointType));
-  if (optionsLeft) { // an option that nothing used is an error, as in the boltnet driver
-    std::string left;
-    PetscCall(UnusedOptions(&left));
-    if (!left.empty()) {
-      PetscCall(PetscPrintf(comm, "boltnet-identify: ERROR: option(s) given but never used:%s\n", left.c_str()));
-      *exitcode = 2;
-    }
-  }
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet-identify", exitcode)); // an error, not a warning
   PetscFunctionReturn(0);
 }
 

@@ -23,9 +23,9 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
 // Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
 // a misspelled boltnet option stops the run before it starts.
 PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);
-// The options that nothing used, as " -a -b" ("" when none): with -options_left the drivers make
-// them an error rather than PETSc's warning (Debian's PETSc otherwise ignores typos).
-PetscErrorCode UnusedOptions(std::string *names);
+// With -options_left the drivers make an option that nothing used an error rather than PETSc's
+// warning (Debian's PETSc otherwise ignores typos): prints them and sets *exitcode = 2.
+PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], int *exitcode);
 
 // Results, written by rank 0 under dir.
 struct Output {

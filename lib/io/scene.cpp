@@ -395,15 +395,19 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode UnusedOptions(std::string *left)
+PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], int *exitcode)
 {
-  PetscInt n;
-  char   **names, **values;
+  PetscInt    n;
+  char      **names, **values;
+  std::string left;
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
-  left->clear();
-  for (PetscInt i = 0; i < n; ++i) *left += std::string(" -") + names[i];
+  for (PetscInt i = 0; i < n; ++i) left += std::string(" -") + names[i];
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
+  if (!left.empty()) {
+    PetscCall(PetscPrintf(comm, "%s: ERROR: option(s) given but never used:%s\n", program, left.c_str()));
+    *exitcode = 2;
+  }
   PetscFunctionReturn(0);
 }
 
