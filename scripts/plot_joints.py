@@ -25,7 +25,7 @@ except ImportError as e:
 
 COLUMNS = ["step", "load", "joint", "state", "du_n", "du_t1", "du_t2",
            "f_n", "f_t1", "f_t2", "bearing", "slip_t1", "slip_t2"]
-NUMERIC = ["load", "du_t1", "f_t1"]  # the only columns this script draws
+NUMERIC = ["load", "du_t1", "f_t1", "f_t2"]  # the only columns this script draws
 # One fixed colour (and marker shape) per state word (law.hpp: stateName()), so charts are
 # comparable across runs.
 STATE_COLORS = {
@@ -102,6 +102,9 @@ def main():
                     help="x axis of the default chart: load (default) or du_t1")
     ap.add_argument("--force", action="store_true",
                     help="plot f_t1 (N) against du_t1 (mm) instead (the joint's response curve)")
+    ap.add_argument("--share", action="store_true",
+                    help="plot each joint's share of the in-plane force carried by the plotted joints, "
+                         "|f_t| / sum |f_t| at each step, against the load (the load share of each fastener)")
     ap.add_argument("--title", help="chart title (default: the CSV path)")
     args = ap.parse_args()
 
@@ -114,7 +117,21 @@ def main():
             fail(f"{args.csv}: no joint(s) {', '.join(unknown)} (joints present: {', '.join(ids)})")
         ids = [j for j in ids if j in wanted]
 
-    if args.force:
+    if args.share:
+        # |f_t| of every plotted joint, divided by their sum at the same step.
+        total = {}
+        for jid in ids:
+            d = joints[jid]
+            d["share"] = np.hypot(d["f_t1"], d["f_t2"])
+            for st, v in zip(d["step"], d["share"]):
+                total[st] = total.get(st, 0.0) + v
+        for jid in ids:
+            d = joints[jid]
+            t = np.array([total[st] for st in d["step"]])
+            d["share"] = np.divide(d["share"], t, out=np.zeros_like(t), where=t > 0)
+        xcol, ycol = "load", "share"
+        xlabel, ylabel = "load factor (N for the shipped scenes)", "share of the in-plane fastener load"
+    elif args.force:
         xcol, ycol = "du_t1", "f_t1"
         xlabel, ylabel = "jump du_t1 (mm)", "force f_t1 (N)"
     elif args.x == "du_t1":
