@@ -154,7 +154,7 @@ PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda
 // Solver (solver/*.cpp).
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);
 PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx);
-// Names of the joints that changed state between the last two iterates of a failed step.
-PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, Vec X0, Vec X, std::string &msg);
+// After a failed solve: the joints that changed state most often during it, with their states.
+PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg);
 
 } // namespace boltnet

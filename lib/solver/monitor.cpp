@@ -40,7 +40,7 @@ PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void
 }
 
 // After a failed solve: the joints that changed state most often during it, with their states.
-PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, Vec, Vec, std::string &msg)
+PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg)
 {
   PetscFunctionBeginUser;
   // Local summary: (changes, joint id, sequence) for joints that changed state at least twice.

@@ -126,7 +126,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         continue;
       }
       std::string chatter;
-      PetscCall(AssemblyDescribeChatter(a, a->X, Xtry, chatter));
+      PetscCall(AssemblyDescribeChatter(a, chatter));
       if (cuts >= a->max_cuts) {
         std::ostringstream m;
         m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << " did not converge (" << SNESConvergedReasons[reason] << " after " << its
