@@ -374,15 +374,23 @@ PetscErrorCode EvaluateJointsLocal(BoltnetAssembly a, const PetscScalar *x, std:
 }
 } // namespace
 
+// The ghosted local copy of X (collective: every rank must call it, whatever it owns).
+static PetscErrorCode GetLocalX(BoltnetAssembly a, Vec X, Vec *Xl, const PetscScalar **x)
+{
+  PetscFunctionBeginUser;
+  PetscCall(DMGetLocalVector(a->dm, Xl));
+  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, *Xl));
+  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, *Xl));
+  PetscCall(VecGetArrayRead(*Xl, x));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps)
 {
   Vec                Xl;
   const PetscScalar *x;
   PetscFunctionBeginUser;
-  PetscCall(DMGetLocalVector(a->dm, &Xl));
-  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
-  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
-  PetscCall(VecGetArrayRead(Xl, &x));
+  PetscCall(GetLocalX(a, X, &Xl, &x));
   PetscCall(EvaluateJointsLocal(a, x, out, jumps));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(DMRestoreLocalVector(a->dm, &Xl));
@@ -397,11 +405,8 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   PetscScalar          *f;
   std::vector<Response> resp;
   PetscFunctionBeginUser;
-  // One ghost update of X (collective: every rank takes part, owned patches or not).
-  PetscCall(DMGetLocalVector(a->dm, &Xl));
-  PetscCall(DMGlobalToLocalBegin(a->dm, X, INSERT_VALUES, Xl));
-  PetscCall(DMGlobalToLocalEnd(a->dm, X, INSERT_VALUES, Xl));
-  PetscCall(VecGetArrayRead(Xl, &xl));
+  // One ghost update of X, for the joints and the patches alike.
+  PetscCall(GetLocalX(a, X, &Xl, &xl));
   PetscCall(EvaluateJointsLocal(a, xl, resp, nullptr));
   PetscCall(DMGetLocalVector(a->dm, &Fl));
   PetscCall(VecSet(Fl, 0.0));

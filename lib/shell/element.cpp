@@ -329,38 +329,36 @@ void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, El
   ElementStiffness(X, mat, o, K);
 }
 
-void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F)
+namespace {
+// Consistent nodal forces of a surface traction t(n dA) integrated over the bilinear surface with
+// 2 x 2 Gauss points; n dA = X_xi x X_eta dxi deta is handed to `traction`, which returns t dA.
+template <class Traction>
+void SurfaceLoad(const Nodes &X, Traction traction, ElementVector &F)
 {
   F.fill(0);
   for (int g = 0; g < 4; ++g) {
     const Shape s = ShapeAt(kXi[g] * kGauss, kEta[g] * kGauss);
-    Vec3 gxi{}, geta{};
+    Vec3        gxi{}, geta{};
     for (int i = 0; i < 4; ++i)
       for (int k = 0; k < 3; ++k) {
         gxi[k] += s.dxi[i] * X[i][k];
         geta[k] += s.deta[i] * X[i][k];
       }
-    const double dA = Norm(Cross(gxi, geta));
+    const Vec3 tdA = traction(Cross(gxi, geta));
     for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) F[6 * i + k] += s.N[i] * q[k] * dA;
+      for (int k = 0; k < 3; ++k) F[6 * i + k] += s.N[i] * tdA[k];
   }
+}
+} // namespace
+
+void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F)
+{
+  SurfaceLoad(X, [&q](const Vec3 &ndA) { const double dA = Norm(ndA); return Vec3{q[0] * dA, q[1] * dA, q[2] * dA}; }, F);
 }
 
 void ElementPressure(const Nodes &X, double p, ElementVector &F)
 {
-  F.fill(0);
-  for (int g = 0; g < 4; ++g) {
-    const Shape s = ShapeAt(kXi[g] * kGauss, kEta[g] * kGauss);
-    Vec3 gxi{}, geta{};
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) {
-        gxi[k] += s.dxi[i] * X[i][k];
-        geta[k] += s.deta[i] * X[i][k];
-      }
-    const Vec3 ndA = Cross(gxi, geta);
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) F[6 * i + k] += s.N[i] * p * ndA[k];
-  }
+  SurfaceLoad(X, [p](const Vec3 &ndA) { return Vec3{p * ndA[0], p * ndA[1], p * ndA[2]}; }, F);
 }
 
 GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options,
