@@ -64,7 +64,7 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(OutputOpen(comm, dir, scene.name, &out));
   out.identified = "{" + scene.identified + "}";
   a->on_step = [&out](BoltnetAssembly as, const StepInfo &info) { return OutputStep(as, info, &out); };
-  PetscCall(PetscPrintf(comm, "boltnet: scene %s, %zu patches, %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)\n", scene.name.c_str(), a->patches.size(), a->joints.size(), a->ndof_global, a->size, (double)a->dof_imbalance));
+  PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)\n", scene.name.c_str(), a->nparts, a->patches.size(), a->seams.size(), a->joints.size(), a->ndof_global, a->size, (double)a->dof_imbalance));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
   // program exits non-zero.

@@ -1,6 +1,7 @@
 // Unit tests of the plate generator, the cut into patches, the fastener footprint and the rigid
 // patch coupling (issue 3 items 2 and 3: the pieces that do not need the shell element).
 #include "coupling/rigid.hpp"
+#include "mesh/cut.hpp"
 #include "mesh/mesh.hpp"
 
 #include <gtest/gtest.h>
@@ -33,19 +34,72 @@ TEST(Mesh, RectanglePlate)
 
 // Requirement (issue 3 item 2): a part is cut into patches of at most size x size elements, every
 // element in exactly one patch, patches contiguous blocks.
-TEST(Mesh, CutIntoPatches)
+// The properties every cut must have (issue 3 item 2): each node in one strip, every element within
+// two neighbouring strips, neighbouring strips joined by at least one element, each cluster whole.
+void ExpectValidCut(const QuadMesh &m, const PartCut &c, const std::vector<std::vector<int>> &clusters)
 {
-  int        np;
-  const auto p = CutIntoPatches(10, 7, 4, &np);
-  EXPECT_EQ(np, 3 * 2);
-  std::vector<int> count(np, 0);
-  for (int v : p) count.at(v)++;
-  EXPECT_EQ(count[0], 16); // full 4 x 4 block
-  EXPECT_EQ(count[2], 2 * 4); // last column: 2 elements wide
-  EXPECT_EQ(count[5], 2 * 3); // corner: 2 x 3
-  EXPECT_EQ(p[0], 0);
-  EXPECT_EQ(p[9 + 6 * 10], 5);
-  EXPECT_THROW(CutIntoPatches(4, 4, 0, &np), std::invalid_argument);
+  ASSERT_EQ(c.patch.size(), m.x.size());
+  std::vector<int> count(c.npatches, 0);
+  for (int p : c.patch) {
+    ASSERT_GE(p, 0);
+    ASSERT_LT(p, c.npatches);
+    count[p]++;
+  }
+  for (int n : count) EXPECT_GT(n, 0);
+  std::vector<int> joined(c.npatches, 0);
+  for (const auto &q : m.quads) {
+    std::set<int> s;
+    for (int k = 0; k < 4; ++k) s.insert(c.patch[q[k]]);
+    ASSERT_LE(s.size(), 2u);
+    if (s.size() == 2) {
+      EXPECT_EQ(*s.rbegin() - *s.begin(), 1);
+      joined[*s.begin()] = 1;
+    }
+  }
+  for (int p = 0; p + 1 < c.npatches; ++p) EXPECT_TRUE(joined[p]) << "strip " << p << " is not joined to the next";
+  for (const auto &cl : clusters)
+    for (int n : cl) EXPECT_EQ(c.patch[n], c.patch[cl[0]]);
+}
+
+// Requirement (issue 3 item 2): a part larger than the patch size is cut into strips across its
+// longest side with about the same number of nodes each, keeping each fastener footprint whole.
+TEST(Mesh, CutIntoStrips)
+{
+  const QuadMesh m = RectanglePlate(0, 0, 20, 200, 4, 40, 0); // 5 x 41 nodes, long in y
+  const auto     fp = Footprint(m, {10, 102.5, 0}, {0, 0, 1}, 6.0);
+  ASSERT_GT(fp.size(), 4u);
+  const PartCut c = CutIntoStrips(m, {fp}, 50);
+  EXPECT_EQ(c.npatches, 5); // ceil(205 / 50)
+  ExpectValidCut(m, c, {fp});
+  std::vector<int> count(c.npatches, 0);
+  for (int p : c.patch) count[p]++;
+  for (int n : count) EXPECT_NEAR(n, 41.0, 12.0); // whole rows of 5 nodes, a footprint moves a few
+  for (size_t i = 0; i < m.x.size(); ++i) // strips follow y
+    for (size_t j = 0; j < m.x.size(); ++j)
+      if (m.x[i][1] < m.x[j][1] - 12.5) ASSERT_LE(c.patch[i], c.patch[j]);
+}
+
+// No cut: a size of 0, or a part within the size.
+TEST(Mesh, CutIntoStripsKeepsSmallParts)
+{
+  const QuadMesh m = RectanglePlate(0, 0, 20, 20, 4, 4, 0);
+  EXPECT_EQ(CutIntoStrips(m, {}, 0).npatches, 1);
+  EXPECT_EQ(CutIntoStrips(m, {}, 25).npatches, 1);
+  EXPECT_EQ(CutIntoStrips(m, {}, 24).npatches, 2);
+}
+
+// Strips thinner than an element are refused and fewer are tried: a 40 x 10 plate with 2 x 8
+// elements has 3 columns of 9 nodes across its long side, so asking for 5-node patches ends with one
+// strip per column; a footprint covering the whole plate forbids any cut.
+TEST(Mesh, CutIntoStripsFallsBack)
+{
+  const QuadMesh m = RectanglePlate(0, 0, 40, 10, 2, 8, 0);
+  const PartCut  c = CutIntoStrips(m, {}, 5);
+  EXPECT_EQ(c.npatches, 3);
+  ExpectValidCut(m, c, {});
+  std::vector<int> all(m.x.size());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = (int)i;
+  EXPECT_EQ(CutIntoStrips(m, {all}, 5).npatches, 1);
 }
 
 // Requirement (issue 3 item 3): the footprint is the set of nodes within the radius, measured in the

@@ -87,7 +87,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   std::ostringstream j;
   j.precision(17);
   j << "{\n  \"scene\": " << JsonString(out->scene) << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
-    << ",\n  \"patches\": " << a->patches.size() << ",\n  \"joints\": " << a->joints.size() << ",\n  \"dof\": " << a->ndof_global << ",\n  \"dof_imbalance\": " << a->dof_imbalance << ",\n  \"joint_tangent\": " << JsonString(a->tangent == Tangent::Paper ? "paper" : "consistent")
+    << ",\n  \"parts\": " << a->nparts << ",\n  \"patches\": " << a->patches.size() << ",\n  \"seams\": " << a->seams.size() << ",\n  \"joints\": " << a->joints.size() << ",\n  \"dof\": " << a->ndof_global << ",\n  \"dof_imbalance\": " << a->dof_imbalance << ",\n  \"joint_tangent\": " << JsonString(a->tangent == Tangent::Paper ? "paper" : "consistent")
     << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))
     << ",\n  \"steps\": " << a->steps.size() << ",\n  \"final_load\": " << a->lambda << ",\n  \"cutbacks\": " << a->total_cutbacks << ",\n  \"newton_iterations\": [";
   for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].newton_its;

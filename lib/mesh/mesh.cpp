@@ -27,17 +27,6 @@ QuadMesh RectanglePlate(double x0, double y0, double lx, double ly, int nx, int 
   return m;
 }
 
-std::vector<int> CutIntoPatches(int nx, int ny, int size, int *npatches)
-{
-  if (size < 1) throw std::invalid_argument("the patch size must be at least one element");
-  const int px = (nx + size - 1) / size, py = (ny + size - 1) / size;
-  std::vector<int> patch(static_cast<size_t>(nx) * ny);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) patch[static_cast<size_t>(j) * nx + i] = (j / size) * px + i / size;
-  if (npatches) *npatches = px * py;
-  return patch;
-}
-
 std::vector<int> Footprint(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius)
 {
   const double an = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);

@@ -1,5 +1,5 @@
-// Quadrilateral shell meshes: a built-in generator of rectangular plates, the cut of a part into
-// patches (vertices of the network), and node sets for boundary conditions. Pure C++.
+// Quadrilateral shell meshes: a built-in generator of rectangular plates, node sets for boundary
+// conditions, fastener footprints (the cut of a part into patches: mesh/cut.hpp). Pure C++.
 #pragma once
 
 #include <array>
@@ -18,11 +18,6 @@ struct QuadMesh {
 // A flat rectangular plate [x0, x0 + lx] x [y0, y0 + ly] at height z, nx by ny elements.
 // Node sets: "xmin", "xmax", "ymin", "ymax" (the four edges).
 QuadMesh RectanglePlate(double x0, double y0, double lx, double ly, int nx, int ny, double z);
-
-// Cut a structured nx by ny plate into patches of at most size by size elements (the last row and
-// column of patches take the remainder). Returns the patch index of every element, numbered row by
-// row; `npatches` receives the count.
-std::vector<int> CutIntoPatches(int nx, int ny, int size, int *npatches);
 
 // Nodes of the mesh within `radius` of the point p, measured in the plane normal to `axis`
 // (the fastener's footprint); sorted by node number.

@@ -225,10 +225,13 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsEList("-joint_tangent", "Joint tangent in the Jacobian: the paper's state-switched one or the consistent one", "BoltnetAssemblySetFromOptions", tangents, 2, tangents[t], &t, nullptr));
   PetscCall(PetscOptionsInt("-load_max_cuts", "Step cut-backs (halvings) allowed per load step before the solve stops", "BoltnetAssemblySolveLoadPath", a->max_cuts, &a->max_cuts, nullptr));
   PetscCall(PetscOptionsReal("-coupling_radius", "Footprint radius of a fastener on a shell patch (mm): nodes within it follow the joint node rigidly", "BoltnetAssemblySetFromOptions", a->coupling_radius, &a->coupling_radius, nullptr));
+  PetscCall(PetscOptionsInt("-patch_max_nodes", "Largest shell patch in nodes: a larger part is cut into strips joined by seam edges so that ranks can share it (0: never cut; -1: automatic, about four patches per rank, none under 64 nodes, no cut on one rank)", "BoltnetAssemblySetFromOptions", a->patch_max_nodes, &a->patch_max_nodes, nullptr));
+  PetscCall(PetscOptionsBool("-patch_balance", "Distribute the patches over the ranks by dof with METIS (false: PETSc's partitioner, by edge count)", "BoltnetAssemblySetFromOptions", a->balance, &a->balance, nullptr));
   PetscCall(PetscOptionsReal("-coupling_penalty", "Penalty of the rigid footprint links, as a multiple of the shell's membrane stiffness A11 (N/mm)", "BoltnetAssemblySetFromOptions", a->coupling_penalty, &a->coupling_penalty, nullptr));
   PetscCall(PetscOptionsBool("-joint_monitor", "Print, per Newton iteration, the joints in each state and how many changed (summed over ranks)", "BoltnetAssemblySetFromOptions", a->monitor_states, &a->monitor_states, nullptr));
   PetscOptionsEnd();
   PetscCheck(a->coupling_radius > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_radius %g must be > 0", (double)a->coupling_radius);
+  PetscCheck(a->patch_max_nodes >= -1, a->comm, PETSC_ERR_USER_INPUT, "-patch_max_nodes %" PetscInt_FMT " must be -1 (automatic), 0 (never cut) or a positive node count", a->patch_max_nodes);
   PetscCheck(a->coupling_penalty > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_penalty %g must be > 0", (double)a->coupling_penalty);
   PetscCheck(a->max_cuts >= 0 && a->max_cuts <= 60, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cuts %" PetscInt_FMT " must lie in [0, 60]", a->max_cuts);
   a->tangent               = static_cast<Tangent>(t);

@@ -1,11 +1,15 @@
 // DMNetwork assembly: patches are vertices, joints are edges (docs/architecture.md).
 #include "network/assembly.hpp"
 #include "core/guard.hpp"
+#include "mesh/cut.hpp"
 #include "mesh/mesh.hpp"
+
+#include <metis.h>
 
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <set>
 
 namespace boltnet {
 namespace {
@@ -65,6 +69,38 @@ PetscErrorCode GetPatch(DM dm, PetscInt v, const PatchComp **patch)
   PetscFunctionBeginUser;
   PetscCall(DMNetworkGetComponent(dm, v, 0, &key, &data, &nvar));
   *patch = static_cast<const PatchComp *>(data);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode GetSeam(BoltnetAssembly a, PetscInt e, const Seam **seam)
+{
+  PetscInt key, nvar;
+  void    *data;
+  PetscFunctionBeginUser;
+  PetscCall(DMNetworkGetComponent(a->dm, e, 0, &key, &data, &nvar));
+  *seam = &a->seams.at(static_cast<const SeamComp *>(data)->index);
+  PetscFunctionReturn(0);
+}
+
+// The 24 dof of each seam element: offsets of the seam's two vertices, global or local.
+void SeamElementDofs(const Seam::Element &el, PetscInt oa, PetscInt ob, PetscInt dofs[24])
+{
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < kNodeDof; ++i) dofs[kNodeDof * k + i] = (el.side[k] ? ob : oa) + kNodeDof * el.node[k] + i;
+}
+
+PetscErrorCode GetSeamOffsets(BoltnetAssembly a, PetscInt e, PetscBool global, PetscInt *oa, PetscInt *ob)
+{
+  const PetscInt *cone;
+  PetscFunctionBeginUser;
+  PetscCall(DMNetworkGetConnectedVertices(a->dm, e, &cone));
+  if (global) {
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, cone[0], ALL_COMPONENTS, oa));
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, cone[1], ALL_COMPONENTS, ob));
+  } else {
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, cone[0], ALL_COMPONENTS, oa));
+    PetscCall(DMNetworkGetLocalVecOffset(a->dm, cone[1], ALL_COMPONENTS, ob));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -134,13 +170,23 @@ PetscErrorCode CreateJacobian(BoltnetAssembly a)
   PetscCall(MatSetType(pre, MATPREALLOCATOR));
   PetscCall(MatSetSizes(pre, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
   PetscCall(MatSetUp(pre));
-  PetscScalar zeros[144] = {0};
-  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+  PetscScalar zeros[576] = {0};
+  for (PetscInt e : a->jedges) {
     EdgeView ev;
     PetscInt rows[12];
     PetscCall(GetEdge(a->dm, e, &ev));
     PetscCall(GetEdgeGlobalRows(a->dm, ev, rows));
     PetscCall(MatSetValues(pre, 12, rows, 12, rows, zeros, INSERT_VALUES));
+  }
+  for (PetscInt e : a->sedges) {
+    const Seam *seam;
+    PetscInt    ga, gb, rows[24];
+    PetscCall(GetSeam(a, e, &seam));
+    PetscCall(GetSeamOffsets(a, e, PETSC_TRUE, &ga, &gb));
+    for (const Seam::Element &el : seam->elems) {
+      SeamElementDofs(el, ga, gb, rows);
+      PetscCall(MatSetValues(pre, 24, rows, 24, rows, zeros, INSERT_VALUES));
+    }
   }
   for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
     PetscBool ghost;
@@ -175,44 +221,46 @@ PetscErrorCode CreateJacobian(BoltnetAssembly a)
 
 PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
 {
-  std::map<PetscInt, PetscInt> byId;
   PetscFunctionBeginUser;
   a->dirichlet_rows.clear();
   a->dirichlet_values.clear();
   a->force_rows.clear();
   a->force_values.clear();
-  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
-    PetscBool ghost;
-    PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
-    if (ghost) continue;
-    const PatchComp *p;
-    PetscCall(GetPatch(a->dm, v, &p));
-    byId[p->id] = v;
-  }
   std::map<PetscInt, PetscReal> dir, frc; // global row -> value (later entries override / add)
-  for (const BCDesc &bc : a->bcs) {
-    auto it = byId.find(bc.patch);
-    if (it == byId.end()) continue; // not owned here
+  for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
+    PetscBool        ghost;
     const PatchComp *p;
     PetscInt         goff;
-    PetscCall(GetPatch(a->dm, it->second, &p));
-    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, it->second, ALL_COMPONENTS, &goff));
-    // The nodes: a rigid patch's node; a shell patch's named set, or all its mesh nodes.
-    std::vector<int> nodes = {0};
-    if (p->kind == static_cast<PetscInt>(PatchKind::Shell)) {
-      const QuadMesh &m = a->shells.at(p->index).mesh;
-      if (bc.set.empty()) {
-        nodes.resize(m.x.size());
-        for (size_t n = 0; n < nodes.size(); ++n) nodes[n] = (int)n;
-      } else nodes = m.node_sets.at(bc.set); // checked when the BC was added
-    }
-    for (int n : nodes)
-      for (PetscInt d = 0; d < kNodeDof; ++d) {
-        if (bc.dof >= 0 && d != bc.dof) continue;
-        const PetscInt row = goff + kNodeDof * n + d;
-        if (bc.kind == BOLTNET_BC_FORCE) frc[row] += bc.value / (PetscReal)nodes.size();
-        else dir[row] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
+    PetscCall(DMNetworkIsGhostVertex(a->dm, v, &ghost));
+    if (ghost) continue;
+    PetscCall(GetPatch(a->dm, v, &p));
+    PetscCall(DMNetworkGetGlobalVecOffset(a->dm, v, ALL_COMPONENTS, &goff));
+    const bool        shell = p->kind == static_cast<PetscInt>(PatchKind::Shell);
+    const ShellPatch *sp    = shell ? &a->shells.at(p->index) : nullptr;
+    for (const BCDesc &bc : a->bcs) {
+      if (bc.patch != p->id) continue;
+      // The nodes in this patch: a rigid patch's node; a shell patch's share of the named set, or
+      // all its mesh nodes. A force is the set's total over the whole part.
+      std::vector<int> nodes = {0};
+      PetscInt         total = 1;
+      if (shell) {
+        if (bc.set.empty()) {
+          nodes.resize(sp->mesh.x.size());
+          for (size_t n = 0; n < nodes.size(); ++n) nodes[n] = (int)n;
+        } else {
+          auto it = sp->mesh.node_sets.find(bc.set);
+          nodes   = it == sp->mesh.node_sets.end() ? std::vector<int>{} : it->second; // checked when the BC was added
+        }
+        total = sp->part_set_size.at(bc.set);
       }
+      for (int n : nodes)
+        for (PetscInt d = 0; d < kNodeDof; ++d) {
+          if (bc.dof >= 0 && d != bc.dof) continue;
+          const PetscInt row = goff + kNodeDof * n + d;
+          if (bc.kind == BOLTNET_BC_FORCE) frc[row] += bc.value / (PetscReal)total;
+          else dir[row] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
+        }
+    }
   }
   for (auto &kv : dir) {
     a->dirichlet_rows.push_back(kv.first);
@@ -226,11 +274,183 @@ PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// Replace the parts by the patches they are cut into (lib/mesh/cut.hpp) and add the seams between
+// them. jv holds the part position of each joint's two sides on entry, their patch position on
+// return; the joints' attachment nodes are renumbered to their patch.
+PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
+{
+  PetscFunctionBeginUser;
+  PetscInt maxn = a->patch_max_nodes;
+  if (maxn < 0) { // automatic: about four patches per rank, none smaller than 64 nodes
+    PetscInt total = 0;
+    for (const auto &kv : a->shells) total += (PetscInt)kv.second.mesh.x.size();
+    maxn = a->size == 1 ? 0 : std::max<PetscInt>(64, (total + 4 * a->size - 1) / (4 * a->size));
+  }
+  const PetscInt                                        nparts = (PetscInt)a->patches.size();
+  std::vector<PatchComp>                                patches;
+  std::map<PetscInt, ShellPatch>                        shells;
+  std::vector<std::vector<std::pair<PetscInt, int>>>    jnmap(nparts); // joint node k -> (patch, node)
+  std::vector<PetscInt>                                 first(nparts), nmesh(nparts, 0);
+  for (PetscInt i = 0; i < nparts; ++i) {
+    PatchComp p = a->patches[i];
+    first[i]    = (PetscInt)patches.size();
+    auto sh     = a->shells.find(i);
+    if (sh == a->shells.end()) {
+      p.index = first[i];
+      patches.push_back(p);
+      continue;
+    }
+    ShellPatch &part = sh->second;
+    const int   n    = (int)part.mesh.x.size();
+    nmesh[i]         = n;
+    part.part_set_size[""] = n;
+    for (const auto &kv : part.mesh.node_sets) part.part_set_size[kv.first] = (PetscInt)kv.second.size();
+    std::vector<std::vector<int>> clusters;
+    for (const auto &jn : part.joint_nodes) clusters.push_back(jn.footprint);
+    const PartCut cut = CutIntoStrips(part.mesh, clusters, maxn);
+    if (cut.npatches == 1) {
+      for (size_t k = 0; k < part.joint_nodes.size(); ++k) jnmap[i].push_back({first[i], n + (int)k});
+      p.index = first[i];
+      patches.push_back(p);
+      shells[first[i]] = std::move(part);
+      continue;
+    }
+    std::vector<ShellPatch> subs(cut.npatches);
+    for (ShellPatch &sub : subs) {
+      sub.id            = part.id;
+      sub.material      = part.material;
+      sub.drill         = part.drill;
+      sub.part_set_size = part.part_set_size;
+      for (const auto &kv : part.mesh.node_sets) sub.mesh.node_sets[kv.first]; // every set exists in every patch
+    }
+    std::vector<int> local(n);
+    for (int v = 0; v < n; ++v) {
+      ShellPatch &sub = subs[cut.patch[v]];
+      local[v]        = (int)sub.mesh.x.size();
+      sub.mesh.x.push_back(part.mesh.x[v]);
+    }
+    std::map<int, Seam> seams; // by lower strip
+    for (const auto &q : part.mesh.quads) {
+      int lo = cut.patch[q[0]];
+      for (int k = 1; k < 4; ++k) lo = std::min(lo, cut.patch[q[k]]);
+      bool one = true;
+      for (int k = 0; k < 4; ++k) one = one && cut.patch[q[k]] == lo;
+      if (one) {
+        subs[lo].mesh.quads.push_back({local[q[0]], local[q[1]], local[q[2]], local[q[3]]});
+        continue;
+      }
+      Seam &sm = seams[lo];
+      Seam::Element el;
+      for (int k = 0; k < 4; ++k) {
+        el.X[k]    = part.mesh.x[q[k]];
+        el.side[k] = cut.patch[q[k]] != lo;
+        el.node[k] = local[q[k]];
+      }
+      sm.elems.push_back(el);
+    }
+    for (const auto &kv : part.mesh.node_sets)
+      for (int v : kv.second) subs[cut.patch[v]].mesh.node_sets[kv.first].push_back(local[v]);
+    for (auto jn : part.joint_nodes) { // the whole footprint is in one strip (CutIntoStrips)
+      const int s = cut.patch[jn.footprint[0]];
+      for (int &v : jn.footprint) v = local[v];
+      jnmap[i].push_back({first[i] + s, (int)(subs[s].mesh.x.size() + subs[s].joint_nodes.size())});
+      subs[s].joint_nodes.push_back(jn);
+    }
+    for (int s = 0; s < cut.npatches; ++s) {
+      PatchComp q = p;
+      q.index     = first[i] + s;
+      q.nnodes    = subs[s].nnodes();
+      for (int k = 0; k < 3; ++k) q.x[k] = subs[s].mesh.x[0][k];
+      patches.push_back(q);
+      shells[q.index] = std::move(subs[s]);
+    }
+    for (auto &kv : seams) {
+      Seam &sm    = kv.second;
+      sm.part     = part.id;
+      sm.va       = first[i] + kv.first;
+      sm.vb       = first[i] + kv.first + 1;
+      sm.material = part.material;
+      sm.drill    = part.drill;
+      a->seams.push_back(std::move(sm));
+    }
+  }
+  for (size_t ji = 0; ji < a->joints.size(); ++ji)
+    for (int side = 0; side < 2; ++side) {
+      JointComp     &j    = a->joints[ji];
+      PetscInt      &node = side ? j.node_b : j.node_a;
+      PetscInt      &pos  = jv[2 * ji + side];
+      const PetscInt part = pos;
+      if (jnmap[part].empty()) {
+        pos = first[part];
+        continue;
+      }
+      const auto &m = jnmap[part][node - nmesh[part]];
+      pos           = m.first;
+      node          = m.second;
+    }
+  a->patches = std::move(patches);
+  a->shells  = std::move(shells);
+  PetscFunctionReturn(0);
+}
+
+// Distribute the patches over the ranks by dof: METIS (vertex weight: the patch's dof; edge weight:
+// the joints and seams between two patches) on rank 0, then each edge goes to the lower of its two
+// vertices' ranks. PETSc gives a vertex shared by several ranks to the highest of them, so a patch
+// joined to a patch of its own rank stays there; the achieved balance is measured after
+// distribution (dof_imbalance). The plex's partitioner is set to a shell partitioner holding that
+// edge partition; -petscpartitioner_type on the command line still overrides it.
+PetscErrorCode SetPartition(BoltnetAssembly a, const std::vector<PetscInt> &edgelist)
+{
+  DM               plex;
+  PetscPartitioner part;
+  PetscFunctionBeginUser;
+  if (a->size == 1 || !a->balance) PetscFunctionReturn(0);
+  const PetscInt        ne = (PetscInt)edgelist.size() / 2;
+  std::vector<PetscInt> sizes(a->size, 0), points;
+  if (a->rank == 0) {
+    idx_t                           nv = (idx_t)a->patches.size(), ncon = 1, nparts = a->size, objval;
+    std::vector<std::map<idx_t, idx_t>> adj(nv);
+    for (PetscInt e = 0; e < ne; ++e) {
+      const idx_t u = (idx_t)edgelist[2 * e], v = (idx_t)edgelist[2 * e + 1];
+      adj[u][v]++;
+      adj[v][u]++;
+    }
+    std::vector<idx_t> xadj(1, 0), adjncy, adjwgt, vwgt(nv), vpart(nv, 0);
+    for (idx_t u = 0; u < nv; ++u) {
+      for (const auto &kv : adj[u]) {
+        adjncy.push_back(kv.first);
+        adjwgt.push_back(kv.second);
+      }
+      xadj.push_back((idx_t)adjncy.size());
+      vwgt[u] = (idx_t)(kNodeDof * a->patches[u].nnodes);
+    }
+    idx_t options[METIS_NOPTIONS];
+    METIS_SetDefaultOptions(options);
+    options[METIS_OPTION_SEED]    = 1; // the same partition on every run
+    options[METIS_OPTION_NUMBERING] = 0;
+    int status = METIS_OK;
+    if (nv > nparts) status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adjncy.data(), vwgt.data(), nullptr, adjwgt.data(), &nparts, nullptr, nullptr, options, &objval, vpart.data());
+    else
+      for (idx_t u = 0; u < nv; ++u) vpart[u] = u; // no more patches than ranks: one each
+    PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS failed to partition the network (status %d)", status);
+    std::vector<std::vector<PetscInt>> byRank(a->size);
+    for (PetscInt e = 0; e < ne; ++e) byRank[std::min(vpart[edgelist[2 * e]], vpart[edgelist[2 * e + 1]])].push_back(e);
+    for (PetscMPIInt r = 0; r < a->size; ++r) {
+      sizes[r] = (PetscInt)byRank[r].size();
+      points.insert(points.end(), byRank[r].begin(), byRank[r].end());
+    }
+  }
+  PetscCall(DMNetworkGetPlex(a->dm, &plex));
+  PetscCall(DMPlexGetPartitioner(plex, &part));
+  PetscCall(PetscPartitionerSetType(part, PETSCPARTITIONERSHELL));
+  PetscCall(PetscPartitionerShellSetPartition(part, a->size, sizes.data(), points.data()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
 {
-  PetscInt keyPatch, keyJoint;
   PetscFunctionBeginUser;
   const PetscInt npatch = (PetscInt)a->patches.size(), njoint = (PetscInt)a->joints.size();
   PetscCheck(npatch > 0 && njoint > 0, a->comm, PETSC_ERR_USER_INPUT, "The assembly needs at least one patch and one joint (it has %" PetscInt_FMT " patches, %" PetscInt_FMT " joints)", npatch, njoint);
@@ -296,36 +516,70 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
     }
   for (auto &kv : a->shells) a->patches[kv.first].nnodes = kv.second.nnodes();
 
+  // Large parts become several patches joined by seams; the edges are the joints, then the seams.
+  a->nparts = npatch;
+  PetscCall(Guard(a->comm, [&] { return CutParts(a, edgelist); }));
+  for (const Seam &sm : a->seams) {
+    edgelist.push_back(sm.va);
+    edgelist.push_back(sm.vb);
+  }
+  const PetscInt nseam = (PetscInt)a->seams.size();
+
   PetscCall(DMNetworkCreate(a->comm, &a->dm));
   PetscCall(DMNetworkSetNumSubNetworks(a->dm, PETSC_DECIDE, 1));
-  PetscCall(DMNetworkRegisterComponent(a->dm, "patch", sizeof(PatchComp), &keyPatch));
-  PetscCall(DMNetworkRegisterComponent(a->dm, "joint", sizeof(JointComp), &keyJoint));
+  PetscCall(DMNetworkRegisterComponent(a->dm, "patch", sizeof(PatchComp), &a->keyPatch));
+  PetscCall(DMNetworkRegisterComponent(a->dm, "joint", sizeof(JointComp), &a->keyJoint));
+  PetscCall(DMNetworkRegisterComponent(a->dm, "seam", sizeof(SeamComp), &a->keySeam));
   // Rank 0 lays out the whole network; DMNetworkDistribute spreads it.
-  const PetscInt ne = a->rank == 0 ? njoint : 0;
+  const PetscInt ne = a->rank == 0 ? njoint + nseam : 0;
   PetscCall(DMNetworkAddSubnetwork(a->dm, "assembly", ne, a->rank == 0 ? edgelist.data() : nullptr, nullptr));
   PetscCall(DMNetworkLayoutSetUp(a->dm));
+  std::vector<SeamComp> seamcomps(nseam);
   if (a->rank == 0) {
     PetscInt        nv, nee;
     const PetscInt *vtx, *edges;
     PetscCall(DMNetworkGetSubnetwork(a->dm, 0, &nv, &nee, &vtx, &edges));
-    for (PetscInt i = 0; i < nee; ++i) {
+    for (PetscInt i = 0; i < njoint; ++i) {
       JointComp &j = a->joints[i];
       j.index      = i;
-      PetscCall(DMNetworkAddComponent(a->dm, edges[i], keyJoint, &j, 0));
+      PetscCall(DMNetworkAddComponent(a->dm, edges[i], a->keyJoint, &j, 0));
+    }
+    for (PetscInt i = 0; i < nseam; ++i) {
+      seamcomps[i] = SeamComp{i, a->seams[i].part};
+      PetscCall(DMNetworkAddComponent(a->dm, edges[njoint + i], a->keySeam, &seamcomps[i], 0));
     }
     for (PetscInt i = 0; i < nv; ++i) {
       PetscInt gidx;
       PetscCall(DMNetworkGetGlobalVertexIndex(a->dm, vtx[i], &gidx));
       PatchComp &p = a->patches[gidx];
       p.index      = gidx;
-      PetscCall(DMNetworkAddComponent(a->dm, vtx[i], keyPatch, &p, kNodeDof * p.nnodes));
+      PetscCall(DMNetworkAddComponent(a->dm, vtx[i], a->keyPatch, &p, kNodeDof * p.nnodes));
     }
   }
   PetscCall(DMNetworkFinalizeComponents(a->dm));
+  PetscCall(SetPartition(a, edgelist));
   PetscCall(DMNetworkDistribute(&a->dm, 0));
   PetscCall(DMNetworkGetVertexRange(a->dm, &a->vStart, &a->vEnd));
   PetscCall(DMNetworkGetEdgeRange(a->dm, &a->eStart, &a->eEnd));
-  a->committed.assign(a->eEnd - a->eStart, History{});
+  a->jedges.clear();
+  a->sedges.clear();
+  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+    PetscInt key, nvar;
+    void    *data;
+    PetscCall(DMNetworkGetComponent(a->dm, e, 0, &key, &data, &nvar));
+    (key == a->keySeam ? a->sedges : a->jedges).push_back(e);
+  }
+  a->committed.assign(a->jedges.size(), History{});
+  PetscCall(Guard(a->comm, [&] {
+    for (PetscInt e : a->sedges) {
+      const Seam *seam;
+      PetscCall(GetSeam(a, e, &seam));
+      auto &Ks = a->seam_ops[e];
+      Ks.resize(seam->elems.size());
+      for (size_t k = 0; k < seam->elems.size(); ++k) shell::ElementStiffness(seam->elems[k].X, seam->material, seam->drill, Ks[k]);
+    }
+    return PetscErrorCode(0);
+  }));
   for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
     PetscBool        ghost;
     const PatchComp *p;
@@ -360,15 +614,15 @@ namespace {
 PetscErrorCode EvaluateJointsLocal(BoltnetAssembly a, const PetscScalar *x, std::vector<Response> &out, std::vector<Vec6> *jumps)
 {
   PetscFunctionBeginUser;
-  out.resize(a->eEnd - a->eStart);
-  if (jumps) jumps->resize(a->eEnd - a->eStart);
-  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+  out.resize(a->jedges.size());
+  if (jumps) jumps->resize(a->jedges.size());
+  for (size_t i = 0; i < a->jedges.size(); ++i) {
     EdgeView ev;
     PetscInt oa, ob;
-    PetscCall(GetEdgeLocal(a->dm, e, &ev, &oa, &ob));
+    PetscCall(GetEdgeLocal(a->dm, a->jedges[i], &ev, &oa, &ob));
     const Vec6 du = LocalJump(ev.joint->R, x + oa, x + ob);
-    out[e - a->eStart] = evaluate(ev.joint->params, a->committed[e - a->eStart], du, a->tangent);
-    if (jumps) (*jumps)[e - a->eStart] = du;
+    out[i]        = evaluate(ev.joint->params, a->committed[i], du, a->tangent);
+    if (jumps) (*jumps)[i] = du;
   }
   PetscFunctionReturn(0);
 }
@@ -411,14 +665,28 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   PetscCall(DMGetLocalVector(a->dm, &Fl));
   PetscCall(VecSet(Fl, 0.0));
   PetscCall(VecGetArray(Fl, &f));
-  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+  for (size_t k = 0; k < a->jedges.size(); ++k) {
     EdgeView ev;
     PetscInt oa, ob;
-    PetscCall(GetEdgeLocal(a->dm, e, &ev, &oa, &ob));
-    const Vec6 g = GlobalForce(ev.joint->R, resp[e - a->eStart].force);
+    PetscCall(GetEdgeLocal(a->dm, a->jedges[k], &ev, &oa, &ob));
+    const Vec6 g = GlobalForce(ev.joint->R, resp[k].force);
     for (int i = 0; i < kNodeDof; ++i) {
       f[ob + i] += g[i];
       f[oa + i] -= g[i];
+    }
+  }
+  for (const auto &[e, Ks] : a->seam_ops) { // the owned seams' elements: K u
+    const Seam *seam;
+    PetscInt    oa, ob, dofs[24];
+    PetscCall(GetSeam(a, e, &seam));
+    PetscCall(GetSeamOffsets(a, e, PETSC_FALSE, &oa, &ob));
+    for (size_t k = 0; k < Ks.size(); ++k) {
+      SeamElementDofs(seam->elems[k], oa, ob, dofs);
+      for (int r = 0; r < 24; ++r) {
+        PetscScalar sum = 0;
+        for (int c = 0; c < 24; ++c) sum += Ks[k][24 * r + c] * xl[dofs[c]];
+        f[dofs[r]] += sum;
+      }
     }
   }
   for (const auto &[v, op] : a->ops) { // the owned shell patches' linear forces K u
@@ -460,19 +728,29 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscFunctionBeginUser;
   PetscCall(AssemblyEvaluateJoints(a, X, resp));
   PetscCall(MatZeroEntries(P));
-  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+  for (size_t k = 0; k < a->jedges.size(); ++k) {
     EdgeView    ev;
     PetscInt    rows[12];
     PetscScalar vals[144];
-    PetscCall(GetEdge(a->dm, e, &ev));
+    PetscCall(GetEdge(a->dm, a->jedges[k], &ev));
     PetscCall(GetEdgeGlobalRows(a->dm, ev, rows));
-    const Mat6 K = GlobalTangent(ev.joint->R, resp[e - a->eStart].tangent);
+    const Mat6 K = GlobalTangent(ev.joint->R, resp[k].tangent);
     for (int i = 0; i < 12; ++i)
       for (int j = 0; j < 12; ++j) {
         const double sign = ((i < 6) == (j < 6)) ? 1.0 : -1.0;
         vals[12 * i + j]  = sign * K[6 * (i % 6) + (j % 6)];
       }
     PetscCall(MatSetValues(P, 12, rows, 12, rows, vals, ADD_VALUES));
+  }
+  for (const auto &[e, Ks] : a->seam_ops) { // the seams' elements
+    const Seam *seam;
+    PetscInt    ga, gb, dofs[24];
+    PetscCall(GetSeam(a, e, &seam));
+    PetscCall(GetSeamOffsets(a, e, PETSC_TRUE, &ga, &gb));
+    for (size_t k = 0; k < Ks.size(); ++k) {
+      SeamElementDofs(seam->elems[k], ga, gb, dofs);
+      PetscCall(MatSetValues(P, 24, dofs, 24, dofs, Ks[k].data(), ADD_VALUES));
+    }
   }
   for (const auto &[v, op] : a->ops) { // the shell patches' stiffness
     PetscInt              goff;
@@ -532,12 +810,12 @@ PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord>
 {
   std::vector<JointRecord> mine;
   PetscFunctionBeginUser;
-  if (a->accepted.size() != (size_t)(a->eEnd - a->eStart)) PetscCall(AssemblyEvaluateJoints(a, a->X, a->accepted, &a->accepted_jump)); // before the first step
-  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
+  if (a->accepted.size() != a->jedges.size()) PetscCall(AssemblyEvaluateJoints(a, a->X, a->accepted, &a->accepted_jump)); // before the first step
+  for (size_t k = 0; k < a->jedges.size(); ++k) {
     EdgeView ev;
-    PetscCall(GetEdge(a->dm, e, &ev));
-    const Response &re = a->accepted[e - a->eStart];
-    const Vec6     &du = a->accepted_jump[e - a->eStart];
+    PetscCall(GetEdge(a->dm, a->jedges[k], &ev));
+    const Response &re = a->accepted[k];
+    const Vec6     &du = a->accepted_jump[k];
     JointRecord     rec{};
     rec.joint   = ev.joint->id;
     rec.state   = static_cast<PetscInt>(re.state);

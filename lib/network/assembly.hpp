@@ -39,6 +39,12 @@ struct JointComp {
   Params    params;
 };
 
+// Edge component of a seam: plain data; the seam's elements are in the assembly's `seams`.
+struct SeamComp {
+  PetscInt index; // position in the assembly's seams
+  PetscInt part;  // user id of the part
+};
+
 struct BCDesc {
   PetscInt      patch; // user id
   std::string   set;   // node set of a shell patch ("" : every node of the patch)
@@ -77,12 +83,21 @@ struct _p_BoltnetAssembly {
   std::vector<boltnet::JointComp> joints;
   std::vector<boltnet::BCDesc>    bcs;
   std::map<PetscInt, boltnet::ShellPatch> shells; // shell patches by position in `patches`
+  std::vector<boltnet::Seam>              seams;  // seams between patches cut from one part
+  PetscInt nparts = 0; // parts described by the user (before large ones are cut into patches)
+
+  // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,
+  // -1: automatic), and whether boltnet partitions the network by dof (METIS) or PETSc does.
+  PetscInt  patch_max_nodes = -1;
+  PetscBool balance         = PETSC_TRUE;
 
   // Patch coupling: footprint radius (mm) and penalty factor (link stiffness = factor * A11).
   PetscReal coupling_radius  = 4.0;
   PetscReal coupling_penalty = 1e3;
   // Stiffness of the owned shell patches, by vertex point, built after distribution.
   std::map<PetscInt, boltnet::PatchOperator> ops;
+  // Element stiffness of the owned seams, by edge point.
+  std::map<PetscInt, std::vector<boltnet::shell::ElementMatrix>> seam_ops;
 
   // Options.
   boltnet::Tangent tangent        = boltnet::Tangent::Consistent; // docs/solver.md: why
@@ -96,16 +111,19 @@ struct _p_BoltnetAssembly {
   Mat      J    = nullptr;
   Vec      X    = nullptr; // converged solution
   PetscInt vStart = 0, vEnd = 0, eStart = 0, eEnd = 0;
+  PetscInt keyPatch = -1, keyJoint = -1, keySeam = -1; // component keys
+  std::vector<PetscInt> jedges; // local edge points that are joints; joint arrays below follow it
+  std::vector<PetscInt> sedges; // local edge points that are seams
   PetscInt ndof_global = 0;
   PetscReal dof_imbalance = 1; // max over ranks of the owned dof / their mean
 
-  // History per local edge (edge e has index e - eStart), owned by the edge's rank.
+  // History per local joint (jedges[i] has index i), owned by the edge's rank.
   std::vector<boltnet::History> committed;
   // The joints at the last converged step, evaluated against the history before it (so that the
   // state says what the joint did during the step: a joint that slid reads 'slide', not 'stick').
   std::vector<boltnet::Response> accepted;
   std::vector<boltnet::Vec6>     accepted_jump;
-  // Joint states at each Newton iterate of the current solve (local edges), for the monitor and
+  // Joint states at each Newton iterate of the current solve (local joints), for the monitor and
   // for naming the joints that kept changing state when a step fails.
   std::vector<std::vector<PetscInt>> state_trace;
   PetscBool                          user_atol = PETSC_FALSE; // -snes_atol given: keep it

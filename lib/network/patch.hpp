@@ -11,6 +11,7 @@
 #include <petscsys.h>
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,26 @@ struct ShellPatch {
     std::vector<int>      footprint;
   };
   std::vector<JointNode> joint_nodes;
+  // Node counts of the whole part this patch was cut from, by node set ("" : every node): a force
+  // on a set is spread over the set's nodes in every patch of the part.
+  std::map<std::string, PetscInt> part_set_size;
   PetscInt nnodes() const { return (PetscInt)(mesh.x.size() + joint_nodes.size()); }
+};
+
+// A seam: the elements of a part whose nodes lie in two of its patches (va and vb, positions in the
+// assembly's patch list). It is a network edge; its elements' stiffness is added where the edge
+// lives. side[k] says whether node k of an element is in patch vb (1) or va (0), node[k] its number
+// there.
+struct Seam {
+  PetscInt             part = -1; // user id of the part
+  PetscInt             va = -1, vb = -1;
+  shell::ShellMaterial material;
+  double               drill = shell::kDefaultDrill;
+  struct Element {
+    shell::Nodes       X;
+    std::array<int, 4> side, node;
+  };
+  std::vector<Element> elems;
 };
 
 // Sparse symmetric matrix in compressed rows, local dof numbering of one patch.

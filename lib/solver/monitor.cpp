@@ -46,14 +46,14 @@ PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg)
   // Local summary: (changes, joint id, sequence) for joints that changed state at least twice.
   std::ostringstream loc;
   PetscInt           n = 0;
-  for (PetscInt e = a->eStart; e < a->eEnd; ++e) {
-    const auto &tr = a->state_trace.size() > (size_t)(e - a->eStart) ? a->state_trace[e - a->eStart] : std::vector<PetscInt>{};
+  for (size_t i = 0; i < a->jedges.size(); ++i) {
+    const auto &tr = a->state_trace.size() > i ? a->state_trace[i] : std::vector<PetscInt>{};
     PetscInt    changes = 0;
     for (size_t k = 1; k < tr.size(); ++k) changes += tr[k] != tr[k - 1];
     if (changes < 2 || n >= 10) continue;
     PetscInt key, nvar;
     void    *data;
-    PetscCall(DMNetworkGetComponent(a->dm, e, 0, &key, &data, &nvar));
+    PetscCall(DMNetworkGetComponent(a->dm, a->jedges[i], 0, &key, &data, &nvar));
     loc << "joint " << static_cast<JointComp *>(data)->id << " (" << changes << " changes: ";
     const size_t first = tr.size() > 8 ? tr.size() - 8 : 0;
     if (first) loc << "... ";
