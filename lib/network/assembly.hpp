@@ -78,7 +78,9 @@ struct _p_BoltnetAssembly {
   std::vector<boltnet::BCDesc>    bcs;
   std::map<PetscInt, boltnet::ShellPatch> shells; // shell patches by position in `patches`
 
-  // Patch coupling: footprint radius (mm) and penalty factor (link stiffness = factor * A11).
+  // Patch coupling (docs/coupling.md): type, footprint radius (mm) and penalty factor (link
+  // stiffness = factor * A11).
+  boltnet::CouplingType coupling_type = boltnet::CouplingType::Penalty;
   PetscReal coupling_radius  = 4.0;
   PetscReal coupling_penalty = 1e3;
   // Stiffness of the owned shell patches, by vertex point, built after distribution.
