@@ -11,7 +11,7 @@ using namespace boltnet;
 
 namespace {
 
-// A 40 x 20 mm aluminium plate of 4 x 2... n elements with one joint node at p, axis z.
+// A 40 x 20 mm aluminium plate of nx by ny elements with one joint node at p, axis z.
 ShellPatch Plate(int nx, int ny, const std::array<double, 3> &p, double radius)
 {
   ShellPatch sp;
