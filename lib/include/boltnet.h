@@ -62,7 +62,9 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly, PetscInt patch
 /* Shell patches (issue 3): a quadrilateral mesh (nnodes coordinates xyz[3*i+k], nquads
    counter-clockwise quads[4*e+k], node numbers from 0) of an isotropic shell (E, nu, thickness t).
    Joints attach to a shell patch at their position, through the nodes of their footprint
-   (-coupling_radius) tied rigidly to a joint node (-coupling_penalty). */
+   (-coupling_radius) tied rigidly to a joint node: eliminated exactly (-coupling_type exact, the
+   default), by penalty links (penalty, -coupling_penalty), or to the nearest node (node);
+   docs/coupling.md. */
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[]);
 /* A boundary condition on a node set of a shell patch (NULL or "": all its nodes); a force value is

@@ -27,6 +27,84 @@ QuadMesh RectanglePlate(double x0, double y0, double lx, double ly, int nx, int 
   return m;
 }
 
+namespace {
+// In-plane offset of q from p (the component normal to the unit axis n removed) and the axial one.
+void Split(const std::array<double, 3> &q, const std::array<double, 3> &p, const double n[3], double t[3], double *dn)
+{
+  double d[3];
+  *dn = 0;
+  for (int k = 0; k < 3; ++k) {
+    d[k] = q[k] - p[k];
+    *dn += d[k] * n[k];
+  }
+  for (int k = 0; k < 3; ++k) t[k] = d[k] - *dn * n[k];
+}
+
+void UnitAxis(const std::array<double, 3> &axis, double n[3])
+{
+  const double an = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+  if (!(an > 0)) throw std::invalid_argument("the fastener axis is the zero vector");
+  for (int k = 0; k < 3; ++k) n[k] = axis[k] / an;
+}
+} // namespace
+
+int ContainingElement(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis)
+{
+  double n[3];
+  UnitAxis(axis, n);
+  int    best = -1;
+  double bestd = 0;
+  for (size_t e = 0; e < m.quads.size(); ++e) {
+    // Corners relative to p, in the plane normal to the axis: p is inside a convex (or mildly
+    // warped) quadrangle when every edge sees it on the same side, up to a relative tolerance.
+    double t[4][3], dn[4], size = 0;
+    for (int k = 0; k < 4; ++k) {
+      Split(m.x[m.quads[e][k]], p, n, t[k], &dn[k]);
+      size = std::max(size, std::sqrt(t[k][0] * t[k][0] + t[k][1] * t[k][1] + t[k][2] * t[k][2]));
+    }
+    int pos = 0, neg = 0;
+    for (int k = 0; k < 4; ++k) {
+      const double *a = t[k], *b = t[(k + 1) % 4];
+      // (a - p) x (b - p) . n, with p at the origin
+      const double c = (a[1] * b[2] - a[2] * b[1]) * n[0] + (a[2] * b[0] - a[0] * b[2]) * n[1] + (a[0] * b[1] - a[1] * b[0]) * n[2];
+      const double tol = 1e-10 * size * size;
+      if (c > tol) pos++;
+      else if (c < -tol) neg++;
+    }
+    if (pos && neg) continue;
+    const double d = std::fabs(0.25 * (dn[0] + dn[1] + dn[2] + dn[3]));
+    if (best < 0 || d < bestd) best = (int)e, bestd = d;
+  }
+  return best;
+}
+
+std::vector<int> CouplingFootprint(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius)
+{
+  std::vector<int> nodes = Footprint(m, p, axis, radius);
+  if (nodes.size() >= 3) return nodes;
+  const int e = ContainingElement(m, p, axis);
+  if (e < 0) return nodes;
+  for (int k = 0; k < 4; ++k) nodes.push_back(m.quads[e][k]);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+int NearestNode(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis)
+{
+  double n[3];
+  UnitAxis(axis, n);
+  int    best = -1;
+  double bestr = 0;
+  for (size_t i = 0; i < m.x.size(); ++i) {
+    double t[3], dn;
+    Split(m.x[i], p, n, t, &dn);
+    const double r2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+    if (best < 0 || r2 < bestr * (1 - 1e-12)) best = (int)i, bestr = r2;
+  }
+  return best;
+}
+
 std::vector<int> Footprint(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius)
 {
   const double an = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);

@@ -23,4 +23,16 @@ QuadMesh RectanglePlate(double x0, double y0, double lx, double ly, int nx, int 
 // (the fastener's footprint); sorted by node number.
 std::vector<int> Footprint(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius);
 
+// The element whose projection on the plane normal to `axis` contains p (on its boundary counts),
+// the nearest along the axis if several do; -1 if none (p is outside the part).
+int ContainingElement(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis);
+
+// The footprint the couplings use (docs/coupling.md): the nodes within `radius` of p and, when they
+// are fewer than three (a coarse mesh: they cannot carry a moment about the fastener, or there are
+// none), also the four nodes of the element containing p. Empty if neither finds a node.
+std::vector<int> CouplingFootprint(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius);
+
+// The mesh node nearest to p in the plane normal to `axis` (the lowest number among equals).
+int NearestNode(const QuadMesh &m, const std::array<double, 3> &p, const std::array<double, 3> &axis);
+
 } // namespace boltnet

@@ -220,10 +220,12 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
 {
   const char *tangents[] = {"paper", "consistent"};
   PetscInt    t          = static_cast<PetscInt>(a->tangent);
+  PetscInt    ct         = static_cast<PetscInt>(a->coupling_type);
   PetscFunctionBeginUser;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet solver options", "boltnet");
   PetscCall(PetscOptionsEList("-joint_tangent", "Joint tangent in the Jacobian: the paper's state-switched one or the consistent one", "BoltnetAssemblySetFromOptions", tangents, 2, tangents[t], &t, nullptr));
   PetscCall(PetscOptionsInt("-load_max_cuts", "Step cut-backs (halvings) allowed per load step before the solve stops", "BoltnetAssemblySolveLoadPath", a->max_cuts, &a->max_cuts, nullptr));
+  PetscCall(PetscOptionsEList("-coupling_type", "How a joint attaches to a shell patch: its footprint tied rigidly to the joint node by penalty links, or eliminated exactly (rigid-body slaves), or the joint on the nearest mesh node (no footprint)", "BoltnetAssemblySetFromOptions", kCouplingTypeNames, 3, kCouplingTypeNames[ct], &ct, nullptr));
   PetscCall(PetscOptionsReal("-coupling_radius", "Footprint radius of a fastener on a shell patch (mm): nodes within it follow the joint node rigidly", "BoltnetAssemblySetFromOptions", a->coupling_radius, &a->coupling_radius, nullptr));
   PetscCall(PetscOptionsInt("-patch_max_nodes", "Largest shell patch in nodes: a larger part is cut into strips joined by seam edges so that ranks can share it (0: never cut; -1: automatic, about four patches per rank, none under 64 nodes, no cut on one rank)", "BoltnetAssemblySetFromOptions", a->patch_max_nodes, &a->patch_max_nodes, nullptr));
   PetscCall(PetscOptionsBool("-patch_balance", "Distribute the patches over the ranks by dof with METIS (false: PETSc's partitioner, by edge count)", "BoltnetAssemblySetFromOptions", a->balance, &a->balance, nullptr));
@@ -235,6 +237,7 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
   PetscCheck(a->coupling_penalty > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_penalty %g must be > 0", (double)a->coupling_penalty);
   PetscCheck(a->max_cuts >= 0 && a->max_cuts <= 60, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cuts %" PetscInt_FMT " must lie in [0, 60]", a->max_cuts);
   a->tangent               = static_cast<Tangent>(t);
+  a->coupling_type         = static_cast<CouplingType>(ct);
   a->setfromoptions_called = PETSC_TRUE;
   PetscFunctionReturn(0);
 }

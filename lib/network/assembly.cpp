@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace boltnet {
 namespace {
@@ -290,6 +291,7 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
   std::vector<PatchComp>                                patches;
   std::map<PetscInt, ShellPatch>                        shells;
   std::vector<std::vector<std::pair<PetscInt, int>>>    jnmap(nparts); // joint node k -> (patch, node)
+  std::vector<std::vector<std::pair<PetscInt, int>>>    nodemap(nparts); // mesh node of a cut part -> (patch, node)
   std::vector<PetscInt>                                 first(nparts), nmesh(nparts, 0);
   for (PetscInt i = 0; i < nparts; ++i) {
     PatchComp p = a->patches[i];
@@ -328,6 +330,7 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
       ShellPatch &sub = subs[cut.patch[v]];
       local[v]        = (int)sub.mesh.x.size();
       sub.mesh.x.push_back(part.mesh.x[v]);
+      nodemap[i].push_back({first[i] + cut.patch[v], local[v]});
     }
     std::map<int, Seam> seams; // by lower strip
     for (const auto &q : part.mesh.quads) {
@@ -380,13 +383,11 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
       PetscInt      &node = side ? j.node_b : j.node_a;
       PetscInt      &pos  = jv[2 * ji + side];
       const PetscInt part = pos;
-      if (jnmap[part].empty()) {
-        pos = first[part];
-        continue;
-      }
-      const auto &m = jnmap[part][node - nmesh[part]];
-      pos           = m.first;
-      node          = m.second;
+      pos                 = first[part];
+      if (!a->shells.count(part)) continue; // a rigid patch: its node 0
+      if (node < nmesh[part]) {             // a mesh node (-coupling_type node)
+        if (!nodemap[part].empty()) std::tie(pos, node) = nodemap[part][node];
+      } else std::tie(pos, node) = jnmap[part][node - nmesh[part]];
     }
   a->patches = std::move(patches);
   a->shells  = std::move(shells);
@@ -498,8 +499,11 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
       if (!supported[root(i)]) free += (free.empty() ? "" : ", ") + std::to_string(a->patches[i].id);
     PetscCheck(free.empty(), a->comm, PETSC_ERR_USER_INPUT, "Patch(es) %s and the joints between them have no fixed or prescribed dof: the model is singular (a rigid-body motion); fix or prescribe a dof of one of them", free.c_str());
   }
-  // Joints on shell patches attach to a joint node of their own, tied to the footprint nodes.
-  for (JointComp &j : a->joints)
+  // Joints on shell patches attach to a joint node of their own, tied to the footprint nodes
+  // (penalty, exact), or to the nearest mesh node (node). docs/coupling.md.
+  std::map<PetscInt, std::vector<std::array<PetscInt, 2>>> jointOf;
+  for (size_t ji = 0; ji < a->joints.size(); ++ji) {
+    JointComp &j = a->joints[ji];
     for (int side = 0; side < 2; ++side) {
       const PetscInt pid  = side ? j.patch_b : j.patch_a;
       PetscInt      &node = side ? j.node_b : j.node_a;
@@ -507,12 +511,61 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
       node                = 0;
       if (sh == a->shells.end()) continue;
       ShellPatch::JointNode jn;
-      jn.x         = {j.x[0], j.x[1], j.x[2]};
-      jn.axis      = {j.R[0], j.R[1], j.R[2]};
-      jn.footprint = Footprint(sh->second.mesh, jn.x, jn.axis, a->coupling_radius);
+      jn.x    = {j.x[0], j.x[1], j.x[2]};
+      jn.axis = {j.R[0], j.R[1], j.R[2]};
+      if (a->coupling_type == CouplingType::Node) {
+        PetscCheck(ContainingElement(sh->second.mesh, jn.x, jn.axis) >= 0 || !Footprint(sh->second.mesh, jn.x, jn.axis, a->coupling_radius).empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " at (%g, %g, %g) mm: no element of patch %" PetscInt_FMT " contains it and no node lies within %g mm (-coupling_radius): the joint is outside the part", j.id, (double)j.x[0], (double)j.x[1], (double)j.x[2], pid, (double)a->coupling_radius);
+        node = NearestNode(sh->second.mesh, jn.x, jn.axis);
+        continue;
+      }
+      jn.footprint = CouplingFootprint(sh->second.mesh, jn.x, jn.axis, a->coupling_radius);
       PetscCheck(!jn.footprint.empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " at (%g, %g, %g) mm: no node of patch %" PetscInt_FMT " lies within the footprint radius %g mm (-coupling_radius): the joint is outside the part", j.id, (double)j.x[0], (double)j.x[1], (double)j.x[2], pid, (double)a->coupling_radius);
       node = sh->second.nnodes();
       sh->second.joint_nodes.push_back(jn);
+      jointOf[sh->first].push_back({(PetscInt)ji, side});
+    }
+  }
+  if (a->coupling_type == CouplingType::Exact)
+    for (auto &[pidx, sp] : a->shells) {
+      // A node in two footprints follows the nearer joint (the first one at equal distance); a
+      // joint left with no node is an error naming both joints.
+      const auto                   &jo = jointOf[pidx];
+      std::map<int, size_t>         taken; // node -> joint node k
+      for (size_t k = 0; k < sp.joint_nodes.size(); ++k)
+        for (int nd : sp.joint_nodes[k].footprint) {
+          auto dist = [&](size_t kk) {
+            double r2 = 0;
+            for (int c = 0; c < 3; ++c) r2 += (sp.mesh.x[nd][c] - sp.joint_nodes[kk].x[c]) * (sp.mesh.x[nd][c] - sp.joint_nodes[kk].x[c]);
+            return r2;
+          };
+          auto it = taken.find(nd);
+          if (it == taken.end()) taken[nd] = k;
+          else if (dist(k) < dist(it->second) * (1 - 1e-12)) it->second = k;
+        }
+      std::vector<std::vector<int>> kept(sp.joint_nodes.size());
+      for (auto &[nd, k] : taken) kept[k].push_back(nd);
+      for (size_t k = 0; k < sp.joint_nodes.size(); ++k) {
+        if (kept[k].empty()) {
+          const int    nd    = sp.joint_nodes[k].footprint[0];
+          const PetscInt other = a->joints[jo[taken[nd]][0]].id;
+          SETERRQ(a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " on patch %" PetscInt_FMT ": every node of its footprint is nearer to joint %" PetscInt_FMT " (-coupling_type exact gives a shared node to the nearer joint): the two fasteners are too close for this mesh; refine the mesh or reduce -coupling_radius", a->joints[jo[k][0]].id, sp.id, other);
+        }
+        sp.joint_nodes[k].footprint = kept[k];
+      }
+      // A footprint node follows its joint node: it cannot also carry a boundary condition.
+      for (const BCDesc &bc : a->bcs) {
+        if (bc.patch != sp.id) continue;
+        std::vector<int> nodes;
+        if (bc.set.empty()) {
+          nodes.resize(sp.mesh.x.size());
+          for (size_t n = 0; n < nodes.size(); ++n) nodes[n] = (int)n;
+        } else nodes = sp.mesh.node_sets.at(bc.set);
+        for (int nd : nodes) {
+          auto it = taken.find(nd);
+          if (it == taken.end()) continue;
+          SETERRQ(a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": node %d of patch %" PetscInt_FMT " at (%g, %g, %g) mm is in its footprint and also carries a boundary condition (%s): with -coupling_type exact a footprint node follows the joint node and cannot be fixed, prescribed or loaded; move the condition, reduce -coupling_radius, or use -coupling_type penalty", a->joints[jo[it->second][0]].id, nd, sp.id, sp.mesh.x[nd][0], sp.mesh.x[nd][1], sp.mesh.x[nd][2], bc.set.empty() ? "on the whole patch" : ("node set '" + bc.set + "'").c_str());
+        }
+      }
     }
   for (auto &kv : a->shells) a->patches[kv.first].nnodes = kv.second.nnodes();
 
@@ -588,7 +641,7 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
     if (ghost || p->kind != static_cast<PetscInt>(PatchKind::Shell)) continue;
     const ShellPatch &sp = a->shells.at(p->index);
     PetscCall(Guard(a->comm, [&] {
-      a->ops[v] = BuildShellOperator(sp, a->coupling_penalty * sp.material.A[0], a->coupling_radius);
+      a->ops[v] = BuildShellOperator(sp, a->coupling_type, a->coupling_penalty * sp.material.A[0], a->coupling_radius);
       return PetscErrorCode(0);
     }));
   }

@@ -91,7 +91,9 @@ struct _p_BoltnetAssembly {
   PetscInt  patch_max_nodes = -1;
   PetscBool balance         = PETSC_TRUE;
 
-  // Patch coupling: footprint radius (mm) and penalty factor (link stiffness = factor * A11).
+  // Patch coupling (docs/coupling.md): type, footprint radius (mm) and penalty factor (link
+  // stiffness = factor * A11).
+  boltnet::CouplingType coupling_type = boltnet::CouplingType::Exact; // docs/coupling.md: why
   PetscReal coupling_radius  = 4.0;
   PetscReal coupling_penalty = 1e3;
   // Stiffness of the owned shell patches, by vertex point, built after distribution.

@@ -50,16 +50,33 @@ struct Seam {
   std::vector<Element> elems;
 };
 
-// Sparse symmetric matrix in compressed rows, local dof numbering of one patch.
+// How a joint attaches to a shell patch (-coupling_type, docs/coupling.md).
+//   penalty: the footprint nodes tied to the joint node by stiff rigid links (energy penalty);
+//   exact:   the footprint nodes' dof eliminated as rigid-body slaves of the joint node;
+//   node:    no footprint and no joint node: the joint attaches to the nearest mesh node (the
+//            classic spring between two shell nodes, kept as the baseline to compare with).
+enum class CouplingType : int { Penalty = 0, Exact = 1, Node = 2 };
+extern const char *const kCouplingTypeNames[3]; // "penalty", "exact", "node"
+
+// Sparse matrix in compressed rows, local dof numbering of one patch (symmetric except for the
+// constraint rows of exact coupling).
 struct PatchOperator {
   PetscInt              n = 0;
   std::vector<PetscInt> rowptr, cols;
   std::vector<double>   vals;
 };
 
-// The patch stiffness: shell elements plus the rigid links of every joint's footprint, by penalty
-// with stiffness `penalty` (N/mm) on translations and `penalty * radius^2` on rotations.
+// The patch operator A, linear: it enters the residual as A u and the Jacobian as A.
+//   penalty: the shell stiffness K plus the rigid links of every joint's footprint, with stiffness
+//            `penalty` (N/mm) on translations and `penalty * radius^2` on rotations.
+//   exact:   u = T v, v the dof of the nodes outside every footprint and of the joint nodes, the
+//            footprint (slave) dof u_s = T_s(d) u_m: u_s = u_m + theta_m x d, theta_s = theta_m.
+//            The rows of v hold T^T K T (the exact reduced stiffness, no slave column), each slave
+//            row holds c (u_s - T_s u_m) = 0 with c the mean translational diagonal of K, so that
+//            the slave dof stay in the vector with their true displacement. A node in two
+//            footprints must have been given to one joint before (AssemblyBuildNetwork).
+//   node:    K alone (the joints attach to mesh nodes).
 // Throws std::invalid_argument (from the element) on degenerate elements.
-PatchOperator BuildShellOperator(const ShellPatch &p, double penalty, double radius);
+PatchOperator BuildShellOperator(const ShellPatch &p, CouplingType type, double penalty, double radius);
 
 } // namespace boltnet
