@@ -114,13 +114,14 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
 
 PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines)
 {
-  PetscViewer v;
   PetscFunctionBeginUser;
-  const std::string h5 = ff->dir + "/" + kH5;
-  // Geometry and topology once, with the first step; each step then reopens the file, so that a
-  // run that stops leaves every step before it closed on disk.
+  // Geometry and topology once, with the first step. The file stays open and is flushed after each
+  // step, so that a run that stops leaves every step before it readable. Measured on fig3a (20
+  // steps, 1 rank): reopening the file per step cost 0.1 s a step, the flush costs 0.05 s (PETSc
+  // opens HDF5 files through MPI-IO, whose sync waits), writing without flushing 0.005 s.
   const bool first = ff->steps.empty();
-  PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, h5.c_str(), first ? FILE_MODE_WRITE : FILE_MODE_APPEND, &v));
+  if (!ff->viewer) PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/" + kH5).c_str(), FILE_MODE_WRITE, &ff->viewer));
+  PetscViewer v = ff->viewer;
   if (first) {
     std::vector<double>   x, jx;
     std::vector<PetscInt> quads, part, jl, jid;
@@ -187,9 +188,16 @@ PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::
   }
   PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "load", PETSC_REAL, &info.load));
   PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "step", PETSC_INT, &info.step));
-  PetscCall(PetscViewerDestroy(&v));
+  PetscCall(PetscViewerFlush(v));
   ff->steps.emplace_back(info.step, info.load);
   PetscCall(WriteXdmf(*ff));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldsClose(FieldsFile *ff)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerDestroy(&ff->viewer));
   PetscFunctionReturn(0);
 }
 

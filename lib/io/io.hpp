@@ -34,9 +34,11 @@ struct FieldsFile {
   std::string dir, scene;
   PetscInt    nnodes = 0, nquads = 0, njoints = 0; // fixed by the first step
   std::vector<std::pair<PetscInt, PetscReal>> steps; // (step, load factor) written so far
+  PetscViewer viewer = nullptr;                      // fields.h5, open from the first step on
 };
 // Rank 0 only: the step's fields into fields.h5, then fields.xdmf rewritten for every step so far.
 PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
+PetscErrorCode FieldsClose(FieldsFile *ff);
 
 // Results, written by rank 0 under dir.
 struct Output {

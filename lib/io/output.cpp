@@ -134,6 +134,7 @@ PetscErrorCode OutputClose(Output *out)
   PetscFunctionBeginUser;
   if (out->csv) std::fclose(out->csv);
   out->csv = nullptr;
+  PetscCall(FieldsClose(&out->ff));
   PetscFunctionReturn(0);
 }
 
