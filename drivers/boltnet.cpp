@@ -2,7 +2,9 @@ static const char help[] = "boltnet: bolted assemblies with frictional macroelem
 \n\
 Runs a scene: a PETSc YAML options file plus the CSV tables it names (patches, fastener table,\n\
 boundary conditions), through its load path, and writes results under -output_dir:\n\
-joints.csv (one row per joint per converged step) and summary.json.\n\
+joints.csv (one row per joint per converged step), summary.json and, for scenes with shell patches,\n\
+fields.h5 + fields.xdmf (shell displacement and rotation, joints as lines with their state, per\n\
+step; open fields.xdmf in ParaView: docs/output.md).\n\
 \n\
   mpirun -n 2 build/bin/boltnet -scene share/scenes/fig3c.yaml\n\
   mpirun -n 3 build/bin/boltnet -scene share/scenes/fig3c.yaml -load_steps 4 -joint_monitor\n\
@@ -25,7 +27,7 @@ PetscErrorCode Run(int *exitcode)
 {
   MPI_Comm        comm = PETSC_COMM_WORLD;
   char            file[PETSC_MAX_PATH_LEN] = "", outdir[PETSC_MAX_PATH_LEN] = "";
-  PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE;
+  PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE, fields = PETSC_TRUE;
   Scene           scene;
   LoadPath        path;
   BoltnetAssembly a = nullptr;
@@ -36,7 +38,8 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-options_left", &optionsLeft, nullptr));
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options)", "", file, file, sizeof(file), &hasScene));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv and summary.json (default results/<scene name>)", "", outdir, outdir, sizeof(outdir), nullptr));
+  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>)", "", outdir, outdir, sizeof(outdir), nullptr));
+  PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5 + fields.xdmf per converged step (shell displacement/rotation, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", fields, &fields, nullptr));
   PetscOptionsEnd();
   if (!hasScene && helpOnly) { // list the options that do not depend on a scene
     PetscCall(LoadPathFromOptions(comm, nullptr, &path));
@@ -61,7 +64,7 @@ PetscErrorCode Run(int *exitcode)
   }
 
   const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
-  PetscCall(OutputOpen(comm, dir, scene.name, &out));
+  PetscCall(OutputOpen(comm, dir, scene.name, fields, a, &out));
   out.identified = "{" + scene.identified + "}";
   a->on_step = [&out](BoltnetAssembly as, const StepInfo &info) { return OutputStep(as, info, &out); };
   PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)\n", scene.name.c_str(), a->nparts, a->patches.size(), a->seams.size(), a->joints.size(), a->ndof_global, a->size, (double)a->dof_imbalance));

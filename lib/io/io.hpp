@@ -1,9 +1,11 @@
 // Scenes (PETSc YAML options + CSV tables) and results (joints.csv, summary.json).
 #pragma once
 #include "network/assembly.hpp"
+#include "network/fields.hpp"
 
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace boltnet {
@@ -27,6 +29,17 @@ PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);
 // warning (Debian's PETSc otherwise ignores typos): prints them and sets *exitcode = 2.
 PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], int *exitcode);
 
+// Fields (io/fields.cpp): fields.h5 and fields.xdmf under dir, one step at a time, by rank 0.
+struct FieldsFile {
+  std::string dir, scene;
+  PetscInt    nnodes = 0, nquads = 0, njoints = 0; // fixed by the first step
+  std::vector<std::pair<PetscInt, PetscReal>> steps; // (step, load factor) written so far
+  PetscViewer viewer = nullptr;                      // fields.h5, open from the first step on
+};
+// Rank 0 only: the step's fields into fields.h5, then fields.xdmf rewritten for every step so far.
+PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
+PetscErrorCode FieldsClose(FieldsFile *ff);
+
 // Results, written by rank 0 under dir.
 struct Output {
   std::string dir;
@@ -36,8 +49,12 @@ struct Output {
   PetscInt  most_joint = -1, most_step = 0;
   PetscReal most_force = -1, most_load = 0;
   std::string identified = "{}"; // joint types identified from geometry at start-up (Scene)
+  PetscBool   fields     = PETSC_FALSE; // write fields.h5 + fields.xdmf (OutputOpen decides)
+  FieldsFile  ff;
 };
-PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, Output *out);
+// fields: -output_fields; the fields are written only when it is true and the assembly has a shell
+// patch (a rigid-only scene has no field to show).
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out);
 PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
 PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
 PetscErrorCode OutputClose(Output *out);

@@ -1,4 +1,5 @@
-// Results: joints.csv (one row per joint per converged step) and summary.json, written by rank 0.
+// Results: joints.csv (one row per joint per converged step), summary.json and the fields
+// (io/fields.cpp), written by rank 0.
 #include "io/io.hpp"
 
 #include <cmath>
@@ -22,20 +23,25 @@ std::string JsonString(const std::string &s)
 
 } // namespace
 
-PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, Output *out)
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out)
 {
   PetscMPIInt rank;
   int         ok = 1;
   std::string why;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  out->dir   = dir;
-  out->scene = scene;
+  out->dir      = dir;
+  out->scene    = scene;
+  out->fields   = (fields && !a->shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
+  out->ff.dir   = dir;
+  out->ff.scene = scene;
   if (rank == 0) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     // A summary left by an earlier run must not look like this run's result.
     std::filesystem::remove(dir + "/summary.json", ec);
+    std::filesystem::remove(dir + "/fields.xdmf", ec);
+    std::filesystem::remove(dir + "/fields.h5", ec);
     out->csv = std::fopen((dir + "/joints.csv").c_str(), "w");
     ok       = out->csv ? 1 : 0;
     if (ok) std::fprintf(out->csv, "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2\n");
@@ -49,6 +55,19 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
 {
   std::vector<JointRecord> rec;
   PetscFunctionBeginUser;
+  if (out->fields) {
+    std::vector<PartField> parts;
+    std::vector<JointLine> lines;
+    PetscErrorCode         ierr = 0;
+    PetscCall(AssemblyGatherFields(a, parts, lines));
+    if (a->rank == 0) { // rank 0 alone writes: its error is shared before anyone goes on
+      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+      ierr = FieldsWriteStep(&out->ff, info, parts, lines);
+      PetscCall(PetscPopErrorHandler());
+    }
+    PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, a->comm));
+    PetscCheck(!ierr, a->comm, PETSC_ERR_FILE_WRITE, "Cannot write the fields of step %" PetscInt_FMT " in %s/fields.h5 (error %d; -output_fields false turns them off)", info.step, out->dir.c_str(), (int)ierr);
+  }
   PetscCall(AssemblyGatherRecords(a, rec));
   if (a->rank != 0) PetscFunctionReturn(0);
   for (const JointRecord &r : rec) {
@@ -115,6 +134,7 @@ PetscErrorCode OutputClose(Output *out)
   PetscFunctionBeginUser;
   if (out->csv) std::fclose(out->csv);
   out->csv = nullptr;
+  PetscCall(FieldsClose(&out->ff));
   PetscFunctionReturn(0);
 }
 

@@ -330,6 +330,7 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
       ShellPatch &sub = subs[cut.patch[v]];
       local[v]        = (int)sub.mesh.x.size();
       sub.mesh.x.push_back(part.mesh.x[v]);
+      sub.part_node.push_back(v);
       nodemap[i].push_back({first[i] + cut.patch[v], local[v]});
     }
     std::map<int, Seam> seams; // by lower strip
@@ -367,6 +368,7 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
       patches.push_back(q);
       shells[q.index] = std::move(subs[s]);
     }
+    a->cut_parts[part.id] = part.mesh;
     for (auto &kv : seams) {
       Seam &sm    = kv.second;
       sm.part     = part.id;

@@ -84,6 +84,7 @@ struct _p_BoltnetAssembly {
   std::vector<boltnet::BCDesc>    bcs;
   std::map<PetscInt, boltnet::ShellPatch> shells; // shell patches by position in `patches`
   std::vector<boltnet::Seam>              seams;  // seams between patches cut from one part
+  std::map<PetscInt, boltnet::QuadMesh>   cut_parts; // the meshes of the parts that were cut, by user id
   PetscInt nparts = 0; // parts described by the user (before large ones are cut into patches)
 
   // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,

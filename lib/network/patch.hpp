@@ -31,6 +31,8 @@ struct ShellPatch {
   // Node counts of the whole part this patch was cut from, by node set ("" : every node): a force
   // on a set is spread over the set's nodes in every patch of the part.
   std::map<std::string, PetscInt> part_set_size;
+  // Number in the whole part of each mesh node of this patch (empty: the patch is the whole part).
+  std::vector<int> part_node;
   PetscInt nnodes() const { return (PetscInt)(mesh.x.size() + joint_nodes.size()); }
 };
 
