@@ -282,10 +282,10 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
 {
   PetscFunctionBeginUser;
   PetscInt maxn = a->patch_max_nodes;
-  if (maxn < 0) { // automatic: about four patches per rank, none smaller than 64 nodes
+  if (maxn < 0) { // automatic: about eight patches per rank, none smaller than 32 nodes
     PetscInt total = 0;
     for (const auto &kv : a->shells) total += (PetscInt)kv.second.mesh.x.size();
-    maxn = a->size == 1 ? 0 : std::max<PetscInt>(64, (total + 4 * a->size - 1) / (4 * a->size));
+    maxn = a->size == 1 ? 0 : std::max<PetscInt>(32, (total + 8 * a->size - 1) / (8 * a->size));
   }
   const PetscInt                                        nparts = (PetscInt)a->patches.size();
   std::vector<PatchComp>                                patches;
@@ -307,8 +307,17 @@ PetscErrorCode CutParts(BoltnetAssembly a, std::vector<PetscInt> &jv)
     nmesh[i]         = n;
     part.part_set_size[""] = n;
     for (const auto &kv : part.mesh.node_sets) part.part_set_size[kv.first] = (PetscInt)kv.second.size();
-    std::vector<std::vector<int>> clusters;
-    for (const auto &jn : part.joint_nodes) clusters.push_back(jn.footprint);
+    // A footprint and every element touching it stay in one patch: no seam element may touch a
+    // footprint node, since exact coupling eliminates those nodes inside the patch's operator.
+    std::vector<std::vector<int>> touching(n), clusters;
+    for (size_t e = 0; e < part.mesh.quads.size(); ++e)
+      for (int v : part.mesh.quads[e]) touching[v].push_back((int)e);
+    for (const auto &jn : part.joint_nodes) {
+      std::set<int> c(jn.footprint.begin(), jn.footprint.end());
+      for (int v : jn.footprint)
+        for (int e : touching[v]) c.insert(part.mesh.quads[e].begin(), part.mesh.quads[e].end());
+      clusters.emplace_back(c.begin(), c.end());
+    }
     const PartCut cut = CutIntoStrips(part.mesh, clusters, maxn);
     if (cut.npatches == 1) {
       for (size_t k = 0; k < part.joint_nodes.size(); ++k) jnmap[i].push_back({first[i], n + (int)k});
