@@ -82,7 +82,13 @@ PetscErrorCode CouponCompliance(const CouponSpec &s, CouponResult *r)
   PetscCheck(r->force > 0 && std::isfinite(r->force), PETSC_COMM_SELF, PETSC_ERR_PLIB, "Shell correction coupon: no force through the fastener (%g)", r->force);
   r->compliance = delta / r->force;
   // Each sheet carries the load from the fastener to its clamped or loaded end: length - edge.
-  r->Cb = (r->length - r->edge) * (AxialCompliance(s.sheet[0].A) + AxialCompliance(s.sheet[1].A)) / r->width;
+  // (A laminate's membrane stiffness in the coupon's axes: its reference direction at phi from x.)
+  double a11[2];
+  for (int i = 0; i < 2; ++i) {
+    const shell::Vec3 &dir = s.sheet[i].direction;
+    a11[i]                 = AxialCompliance(shell::RotateMaterial(s.sheet[i], std::atan2(dir[1], dir[0])).A);
+  }
+  r->Cb = (r->length - r->edge) * (a11[0] + a11[1]) / r->width;
   r->Cc = r->compliance - r->Cb - 1.0 / s.kspring;
   PetscFunctionReturn(0);
 }

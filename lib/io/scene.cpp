@@ -167,7 +167,18 @@ PetscErrorCode ShellCorrection(MPI_Comm comm, BoltnetAssembly a, const std::stri
     for (const auto &kv : a->shells)
       if (kv.second.id == ids[i]) sp = &kv.second;
     PetscCheck(sp, comm, PETSC_ERR_USER_INPUT, "Joint type '%s': the shell correction (-joint_%s_fastener_shell_correction) needs shell patches, but joint %" PetscInt_FMT " attaches to patch %" PetscInt_FMT ", which is not one", type.c_str(), type.c_str(), fj.id, ids[i]);
+    // The coupon lies in its x-y plane, pulled along x = the joint's t1 (y = n x t1): a laminate's
+    // reference direction goes with it.
     spec.sheet[i] = sp->material;
+    {
+      const PetscReal *n = fj.n, *t = fj.t1, *dir = sp->material.direction.data();
+      const PetscReal  nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), dn = (t[0] * n[0] + t[1] * n[1] + t[2] * n[2]) / (nn * nn);
+      PetscReal        e1[3] = {t[0] - dn * n[0], t[1] - dn * n[1], t[2] - dn * n[2]}, e2[3];
+      const PetscReal  en = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+      for (PetscReal &c : e1) c /= en;
+      e2[0] = (n[1] * e1[2] - n[2] * e1[1]) / nn, e2[1] = (n[2] * e1[0] - n[0] * e1[2]) / nn, e2[2] = (n[0] * e1[1] - n[1] * e1[0]) / nn;
+      spec.sheet[i].direction = {dir[0] * e1[0] + dir[1] * e1[1] + dir[2] * e1[2], dir[0] * e2[0] + dir[1] * e2[1] + dir[2] * e2[2], 0.0};
+    }
     if (sc.h > 0) spec.hx[i] = spec.hy[i] = sc.h;
     else PetscCall(identify::FootprintElementSize(comm, sp->mesh, fj.x, fj.n, fj.t1, radius, &spec.hx[i], &spec.hy[i]));
   }
