@@ -8,10 +8,14 @@ stiffness from a fastener flexibility formula, printed as the YAML of a scene's 
 Curve mode: least-squares fit of ke, G, kg, j, kc to a load-slip curve (CSV with columns load,slip and an\n\
 optional time column that must increase), with standard errors and the residual:\n\
   boltnet-identify -curve test/data/identify/cyclic.csv\n\
+Shell correction (geometry mode, -fastener_shell_correction -fastener_shell_h <mm>): subtract the\n\
+compliance the shell mesh and coupling already deliver, measured on a flat coupon.\n\
 \n\
 Units: any consistent set (N, mm, MPa, N mm in the examples). Formulas, sources and assumptions:\n\
 docs/identify.md. Bad input stops with a message naming it and a non-zero exit.\n\n";
 
+#include "core/guard.hpp"
+#include "identify/coupon.hpp"
 #include "identify/curve.hpp"
 #include "identify/fastener.hpp"
 #include "identify/options.hpp"
@@ -60,10 +64,34 @@ PetscErrorCode GeometryMode(MPI_Comm comm, const char *jointType)
   Params          p;
   PetscBool       helpOnly;
   PetscFunctionBeginUser;
+  ShellCorrectionOptions sc;
   PetscCall(FastenerFromOptions(comm, "fastener_", "boltnet-identify: fastener geometry (geometry mode)", &o));
+  PetscCall(ShellCorrectionFromOptions(comm, "fastener_", "boltnet-identify: shell correction (geometry mode)", PETSC_TRUE, &sc));
   PetscCall(PetscOptionsHasHelp(nullptr, &helpOnly));
   if (helpOnly) PetscFunctionReturn(0);
   PetscCall(FastenerMacroelement(comm, "fastener_", o, &p));
+  const Params p0 = p;
+  CouponSpec   spec;
+  CouponResult res;
+  if (sc.on) {
+    PetscCheck(sc.h > 0, comm, PETSC_ERR_USER_INPUT, "The shell correction needs the shell element size around the fastener: give -fastener_shell_h <mm>");
+    PetscCheck(o.g.n == 1, comm, PETSC_ERR_USER_INPUT, "The shell correction's coupon is a single lap of two sheets: it needs -fastener_shear_planes 1 (got %d)", o.g.n);
+    PetscCall(Guard(comm, [&] {
+      spec.sheet[0] = shell::IsotropicMaterial(o.g.E1, sc.nu, o.g.t1);
+      spec.sheet[1] = shell::IsotropicMaterial(o.g.E2, sc.nu, o.g.t2);
+      return PetscErrorCode(0);
+    }));
+    spec.hx[0] = spec.hy[0] = spec.hx[1] = spec.hy[1] = sc.h;
+    spec.d        = o.g.d;
+    spec.width    = sc.width;
+    spec.coupling = static_cast<CouplingType>(sc.coupling);
+    spec.radius   = sc.radius;
+    spec.kspring  = sc.spring * p.kc;
+    PetscCall(CouponCompliance(spec, &res));
+    char what[160];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "Shell correction (-fastener_shell_h %g, %s coupling, radius %g)", sc.h, kCouplingTypeNames[sc.coupling], sc.radius));
+    PetscCall(ApplyShellCorrection(comm, what, res.Cc, &p));
+  }
   const FastenerGeometry &g  = o.g;
   const Formula           f  = o.formula;
   const HuthType          t  = o.type;
@@ -83,6 +111,11 @@ PetscErrorCode GeometryMode(MPI_Comm comm, const char *jointType)
   else PetscCall(PetscPrintf(comm, "# pretension: no preload nor torque given: Pc = 0, the joint slides at once\n"));
   PetscCall(PetscPrintf(comm, "# friction threshold: G = mu nf Pc = %.8g\n", p.mu * p.nf * p.pretension));
   PetscCall(PetscPrintf(comm, "# axial: kn = Ef (pi d^2/4) / (t1 + n t2) = %.8g\n", p.kn));
+  if (sc.on) {
+    PetscCall(PetscPrintf(comm, "# shell correction: flat coupon %g x %g mm sheets, edge distance %g, %d x %d and %d x %d elements (h = %g), %s coupling, radius %g\n", res.length, res.width, res.edge, res.nx[0], res.ny[0], res.nx[1], res.ny[1], sc.h, kCouplingTypeNames[sc.coupling], sc.radius));
+    PetscCall(PetscPrintf(comm, "#   delta/F = %.8g, bare sheets C_b = %.8g, spring 1/%.6g: C_c = %.8g (%.4f / kc)\n", res.compliance, res.Cb, spec.kspring, res.Cc, res.Cc * p0.kc));
+    PetscCall(PetscPrintf(comm, "#   corrected: kc = 1/(1/%.8g - C_c) = %.8g, kt = 1/(1/%.8g - C_c) = %.8g\n", p0.kc, p.kc, p0.kt, p.kt));
+  }
   PetscCall(PrintJoint(comm, jointType, p));
   PetscFunctionReturn(0);
 }

@@ -67,3 +67,38 @@ boltnet_expect(identify_bad_never_slides 1 --fail --match "G, kg, j and kc are n
   -- ${_id} -curve ${_iddata}/stick-only.csv)
 boltnet_expect(identify_bad_unused_option 1 --fail --match "option\\(s\\) given but never used: -fastener_typo"
   -- ${_id} ${_geom} -options_left -fastener_typo 1)
+
+# Item 2, the shell correction (docs/identify.md, "Stiffness already in the shells"): the coupon's
+# compliance (Huth rivet of the lap joint, exact coupling) is finite, positive, small and converges
+# as h decreases; the corrected flat 1-row lap (150 mm sheets, longer than the 80 mm coupon) shows
+# the structure the formula's kf within 2% on 2 mm and 8 mm meshes, and at 2 mm the scene's coupon
+# (its element size measured on the patches) equals boltnet-identify's.
+add_test(NAME identify_shell_coupon_converges COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_correction.py coupon ${_id})
+foreach(h 2 8)
+  add_test(NAME identify_shell_corrected_flat_lap_h${h}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_correction.py scene $<TARGET_FILE:boltnet_driver> ${_id} ${BOLTNET_OUT}/shell_correction ${h} 0.02)
+endforeach()
+set_tests_properties(identify_shell_coupon_converges identify_shell_corrected_flat_lap_h2 identify_shell_corrected_flat_lap_h8 PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
+set(_rivet -fastener_formula huth -fastener_type riveted-metal -fastener_d 4 -fastener_hole 4 -fastener_t1 1.27 -fastener_t2 1.27
+           -fastener_E1 72000 -fastener_E2 72000 -fastener_Ef 71000 -fastener_mu 0.2)
+boltnet_expect(identify_shell_correction 1 --match "C_c = 1.26[0-9]*e-06 \\(0.027[0-9] / kc\\)" --match "^    kc: 2243[0-9.]+$"
+  --match "^    kt: 2243[0-9.]+$" --match "There are no unused options"
+  -- ${_id} ${_rivet} -fastener_shell_correction -fastener_shell_h 2 -options_left)
+# Bad input: a mesh softer than the formula (the nearest-node spring on a 16 mm mesh adds several
+# 1/kf), in boltnet-identify and in a scene; no element size; double shear.
+boltnet_expect(identify_bad_shell_softer 1 --fail --match "node coupling.*already add a compliance C_c = .* at least the formula's whole joint compliance 1/kc = 4.58[0-9]*e-05 mm/N \\(the mesh is softer than the formula\\)"
+  -- ${_id} ${_rivet} -fastener_shell_correction -fastener_shell_h 16 -fastener_shell_coupling node)
+boltnet_expect(identify_bad_shell_no_h 1 --fail --match "needs the shell element size around the fastener: give -fastener_shell_h"
+  -- ${_id} ${_rivet} -fastener_shell_correction)
+boltnet_expect(identify_bad_shell_double_shear 1 --fail --match "coupon is a single lap of two sheets: it needs -fastener_shear_planes 1 \\(got 2\\)"
+  -- ${_id} ${_rivet} -fastener_shell_correction -fastener_shell_h 2 -fastener_shear_planes 2)
+boltnet_expect(scene_bad_shell_softer 2 --fail --match "Joint type 'rivet' \\(shell correction at its joint 1, elements 16.7 x 20 and 16.7 x 20 mm, node coupling\\).*mesh is softer than the formula"
+  -- ${BOLTNET_MPIRUN} 2 --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${CMAKE_CURRENT_SOURCE_DIR}/scenes/correction-flat-h16.yaml
+  -output_dir ${BOLTNET_OUT}/scene_bad_shell_softer -coupling_type node)
+# The same scene with exact coupling runs on 2 ranks (every rank solves the coupon on its own) and
+# records the correction in summary.json.
+boltnet_run(correction_flat_h16 2 ${CMAKE_CURRENT_SOURCE_DIR}/scenes/correction-flat-h16.yaml)
+add_test(NAME correction_flat_h16_summary_np2 COMMAND ${BOLTNET_PYTHON} -c
+  "import json,sys; s=json.load(open(sys.argv[1]))['identified_joint_types']['rivet']; c=s['shell_correction']; print(c); sys.exit(0 if abs(c['C_c']*c['kc_formula']+0.184)<0.01 and abs(1/s['kc']-(1/c['kc_formula']-c['C_c']))<1e-12 else 1)"
+  ${BOLTNET_OUT}/correction_flat_h16_np2/summary.json)
+set_tests_properties(correction_flat_h16_summary_np2 PROPERTIES FIXTURES_REQUIRED correction_flat_h16_np2)

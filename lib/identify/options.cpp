@@ -43,6 +43,25 @@ PetscErrorCode FastenerFromOptions(MPI_Comm comm, const char prefix[], const cha
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode ShellCorrectionFromOptions(MPI_Comm comm, const char prefix[], const char title[], PetscBool standalone, ShellCorrectionOptions *o)
+{
+  const char *couplings[] = {"penalty", "exact", "node"}; // as -coupling_type (network/patch.hpp)
+  PetscFunctionBeginUser;
+  PetscOptionsBegin(comm, prefix, title, "boltnet");
+  PetscCall(PetscOptionsBool("-shell_correction", "Subtract from the formula's compliance what the shell mesh and coupling already deliver, measured on a flat coupon (docs/identify.md)", "", o->on, &o->on, nullptr));
+  PetscCall(PetscOptionsReal("-shell_h", standalone ? "Shell element size around the fastener (mm), required with the correction" : "Shell element size around the fastener (mm); 0: measured on the joint's patches", "", o->h, &o->h, nullptr));
+  PetscCall(PetscOptionsReal("-shell_width", "Width of the correction coupon (mm); 0: 5 d", "", o->width, &o->width, nullptr));
+  PetscCall(PetscOptionsReal("-shell_spring", "The coupon's fastener spring, as a multiple of the formula's kc", "", o->spring, &o->spring, nullptr));
+  if (standalone) {
+    PetscCall(PetscOptionsReal("-shell_nu", "Poisson ratio of the coupon's (isotropic) sheets", "", o->nu, &o->nu, nullptr));
+    PetscCall(PetscOptionsEList("-shell_coupling", "Coupling of the coupon's fastener, as -coupling_type of the scene", "", couplings, 3, couplings[o->coupling], &o->coupling, nullptr));
+    PetscCall(PetscOptionsReal("-shell_radius", "Footprint radius of the coupon's fastener (mm), as -coupling_radius of the scene", "", o->radius, &o->radius, nullptr));
+  }
+  PetscOptionsEnd();
+  PetscCheck(o->h >= 0 && o->width >= 0 && o->spring > 0 && o->radius > 0, comm, PETSC_ERR_USER_INPUT, "Options -%sshell_*: h (%g) and width (%g) must be >= 0, spring (%g) and radius (%g) > 0", prefix, o->h, o->width, o->spring, o->radius);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FastenerMacroelement(MPI_Comm comm, const char prefix[], const FastenerOptions &o, Params *p)
 {
   PetscFunctionBeginUser;

@@ -16,6 +16,21 @@ struct FastenerOptions {
   PetscBool        has_mu = PETSC_FALSE;
 };
 
+// The shell correction (issue 5 item 2, identify/coupon.hpp): options -<prefix>shell_*.
+struct ShellCorrectionOptions {
+  PetscBool on     = PETSC_FALSE;
+  double    h      = 0;    // element size around the fastener (mm); 0: measured on the joint's patches (scenes)
+  double    width  = 0;    // coupon width; 0: 5 d
+  double    spring = 1e3;  // the coupon's fastener spring, as a multiple of kc
+  // boltnet-identify only (a scene uses its patches' sections and its -coupling_* options):
+  double    nu       = 0.33; // Poisson ratio of the two (isotropic) sheets
+  PetscInt  coupling = 1;    // CouplingType: exact
+  double    radius   = 4.0;  // footprint radius (mm)
+};
+// Reads -<prefix>shell_correction, _shell_h, _shell_width, _shell_spring and, when standalone
+// (boltnet-identify), _shell_nu, _shell_coupling, _shell_radius.
+PetscErrorCode ShellCorrectionFromOptions(MPI_Comm comm, const char prefix[], const char title[], PetscBool standalone, ShellCorrectionOptions *o);
+
 // Reads the geometry options -<prefix>d, -<prefix>hole, ... (listed by -help with units).
 PetscErrorCode FastenerFromOptions(MPI_Comm comm, const char prefix[], const char title[], FastenerOptions *o);
 // Checks the geometry and returns the frictional macroelement; errors name the options -<prefix>*.

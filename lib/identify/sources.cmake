@@ -4,7 +4,8 @@
 target_sources(boltnet PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/fastener.cpp
   ${CMAKE_CURRENT_LIST_DIR}/curve.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/options.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/options.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/coupon.cpp)
 
 # The driver boltnet-identify (drivers/identify.cpp): geometry mode and curve mode.
 add_executable(boltnet_identify ${PROJECT_SOURCE_DIR}/drivers/identify.cpp)

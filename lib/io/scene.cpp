@@ -3,6 +3,7 @@
 #include "io/io.hpp"
 #include "core/guard.hpp"
 #include "mesh/gmsh.hpp"
+#include "identify/coupon.hpp"
 #include "identify/options.hpp"
 
 #include <cerrno>
@@ -138,7 +139,67 @@ PetscErrorCode JointParamsOptions(PetscOptionItems *PetscOptionsObject, BoltnetJ
 }
 
 // Options of one joint type, prefix joint_<type>_; -help lists them with defaults and units.
-PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, BoltnetJointParams *p, Scene *scene)
+// The first joint of a type (where a joint type identified from its geometry measures the shell
+// mesh for the shell correction).
+struct FirstJoint {
+  PetscInt  id, patch_a, patch_b;
+  PetscReal n[3], t1[3], x[3];
+};
+
+// The shell correction of a joint type identified from its geometry (docs/identify.md, "Stiffness
+// already in the shells"): the coupon meshed like the patches around its first joint, with their
+// sections and the scene's coupling; corrects q's kc and kt and records the coupon in j.
+PetscErrorCode ShellCorrection(MPI_Comm comm, BoltnetAssembly a, const std::string &type, const identify::FastenerOptions &o, const identify::ShellCorrectionOptions &sc, const FirstJoint &fj, Params *q, std::ostringstream &j)
+{
+  identify::CouponSpec   spec;
+  identify::CouponResult res;
+  PetscFunctionBeginUser;
+  // The coupling the scene will use (read again by BoltnetAssemblySetFromOptions later).
+  PetscInt  ct = static_cast<PetscInt>(a->coupling_type);
+  PetscReal radius = a->coupling_radius, penalty = a->coupling_penalty;
+  PetscCall(PetscOptionsGetEList(nullptr, a->prefix.c_str(), "-coupling_type", kCouplingTypeNames, 3, &ct, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, a->prefix.c_str(), "-coupling_radius", &radius, nullptr));
+  PetscCall(PetscOptionsGetReal(nullptr, a->prefix.c_str(), "-coupling_penalty", &penalty, nullptr));
+  PetscCheck(o.g.n == 1, comm, PETSC_ERR_USER_INPUT, "Joint type '%s': the shell correction's coupon is a single lap of two sheets; it needs -joint_%s_fastener_shear_planes 1 (got %d)", type.c_str(), type.c_str(), o.g.n);
+  const PetscInt ids[2] = {fj.patch_a, fj.patch_b};
+  for (int i = 0; i < 2; ++i) {
+    const ShellPatch *sp = nullptr;
+    for (const auto &kv : a->shells)
+      if (kv.second.id == ids[i]) sp = &kv.second;
+    PetscCheck(sp, comm, PETSC_ERR_USER_INPUT, "Joint type '%s': the shell correction (-joint_%s_fastener_shell_correction) needs shell patches, but joint %" PetscInt_FMT " attaches to patch %" PetscInt_FMT ", which is not one", type.c_str(), type.c_str(), fj.id, ids[i]);
+    // The coupon lies in its x-y plane, pulled along x = the joint's t1 (y = n x t1): a laminate's
+    // reference direction goes with it.
+    spec.sheet[i] = sp->material;
+    {
+      const PetscReal *n = fj.n, *t = fj.t1, *dir = sp->material.direction.data();
+      const PetscReal  nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), dn = (t[0] * n[0] + t[1] * n[1] + t[2] * n[2]) / (nn * nn);
+      PetscReal        e1[3] = {t[0] - dn * n[0], t[1] - dn * n[1], t[2] - dn * n[2]}, e2[3];
+      const PetscReal  en = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+      for (PetscReal &c : e1) c /= en;
+      e2[0] = (n[1] * e1[2] - n[2] * e1[1]) / nn, e2[1] = (n[2] * e1[0] - n[0] * e1[2]) / nn, e2[2] = (n[0] * e1[1] - n[1] * e1[0]) / nn;
+      spec.sheet[i].direction = {dir[0] * e1[0] + dir[1] * e1[1] + dir[2] * e1[2], dir[0] * e2[0] + dir[1] * e2[1] + dir[2] * e2[2], 0.0};
+    }
+    if (sc.h > 0) spec.hx[i] = spec.hy[i] = sc.h;
+    else PetscCall(identify::FootprintElementSize(comm, sp->mesh, fj.x, fj.n, fj.t1, radius, &spec.hx[i], &spec.hy[i]));
+  }
+  spec.d        = o.g.d;
+  spec.width    = sc.width;
+  spec.coupling = static_cast<CouplingType>(ct);
+  spec.radius   = radius;
+  spec.penalty  = penalty;
+  spec.kspring  = sc.spring * q->kc;
+  PetscCall(identify::CouponCompliance(spec, &res));
+  const double kc0 = q->kc, kt0 = q->kt;
+  char         what[256];
+  PetscCall(PetscSNPrintf(what, sizeof(what), "Joint type '%s' (shell correction at its joint %" PetscInt_FMT ", elements %.3g x %.3g and %.3g x %.3g mm, %s coupling)", type.c_str(), fj.id, spec.hx[0], spec.hy[0], spec.hx[1], spec.hy[1], kCouplingTypeNames[ct]));
+  PetscCall(identify::ApplyShellCorrection(comm, what, res.Cc, q));
+  j << ", \"shell_correction\": {\"C_c\": " << res.Cc << ", \"kc_formula\": " << kc0 << ", \"kt_formula\": " << kt0 << ", \"h\": [[" << spec.hx[0] << ", " << spec.hy[0] << "], [" << spec.hx[1] << ", " << spec.hy[1] << "]]"
+    << ", \"coupling\": \"" << kCouplingTypeNames[ct] << "\", \"radius\": " << radius << ", \"coupon\": {\"width\": " << res.width << ", \"length\": " << res.length << ", \"edge\": " << res.edge << ", \"C_b\": " << res.Cb << ", \"spring\": " << spec.kspring << "}}";
+  PetscCall(PetscInfo(nullptr, "joint type %s: shell correction C_c %g (elements %g x %g, %g x %g): kc %g -> %g\n", type.c_str(), res.Cc, spec.hx[0], spec.hy[0], spec.hx[1], spec.hy[1], kc0, q->kc));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode JointTypeFromOptions(MPI_Comm comm, BoltnetAssembly a, const std::string &type, const FirstJoint &fj, BoltnetJointParams *p, Scene *scene)
 {
   const std::string prefix = "joint_" + type + "_";
   const std::string title  = "Joint type '" + type + "' (units: N, mm, N/mm, N mm/rad)";
@@ -158,13 +219,21 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, const std::string &type, Bolt
     const std::string         ftitle  = "Joint type '" + type + "': fastener geometry (units: N, mm, MPa, N mm)";
     PetscCall(identify::FastenerFromOptions(comm, fprefix.c_str(), ftitle.c_str(), &o));
     PetscCall(identify::FastenerMacroelement(comm, fprefix.c_str(), o, &q));
+    identify::ShellCorrectionOptions sc;
+    const std::string                stitle = "Joint type '" + type + "': shell correction of the formula's stiffness";
+    std::ostringstream               jc;
+    jc.precision(17);
+    PetscCall(identify::ShellCorrectionFromOptions(comm, fprefix.c_str(), stitle.c_str(), PETSC_FALSE, &sc));
+    PetscBool help;
+    PetscCall(PetscOptionsHasHelp(nullptr, &help));
+    if (sc.on && !help) PetscCall(ShellCorrection(comm, a, type, o, sc, fj, &q, jc));
     p->law = BOLTNET_LAW_FRICTION;
     p->kn = q.kn, p->kt = q.kt, p->kr = q.kr, p->kc = q.kc, p->kg = q.kg, p->gap = q.gap, p->mu = q.mu, p->nf = q.nf;
     p->pretension = q.pretension, p->clamp_coupling = q.clamp_coupling, p->offset[0] = q.offset[0], p->offset[1] = q.offset[1];
     std::ostringstream j;
     j.precision(17);
     j << (scene->identified.empty() ? "" : ", ") << "\"" << type << "\": {\"formula\": \"" << identify::formulaName(o.formula) << "\", \"kn\": " << q.kn << ", \"kt\": " << q.kt << ", \"kc\": " << q.kc
-      << ", \"kg\": " << q.kg << ", \"kr\": " << q.kr << ", \"gap\": " << q.gap << ", \"mu\": " << q.mu << ", \"nf\": " << q.nf << ", \"pretension\": " << q.pretension << ", \"G\": " << frictionThreshold(q, 0.0) << "}";
+      << ", \"kg\": " << q.kg << ", \"kr\": " << q.kr << ", \"gap\": " << q.gap << ", \"mu\": " << q.mu << ", \"nf\": " << q.nf << ", \"pretension\": " << q.pretension << ", \"G\": " << frictionThreshold(q, 0.0) << jc.str() << "}";
     scene->identified += j.str();
     PetscCall(PetscInfo(nullptr, "joint type %s identified from its geometry: kc %g gap %g pretension %g\n", type.c_str(), q.kc, q.gap, q.pretension));
     PetscFunctionReturn(0);
@@ -356,7 +425,6 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
     std::string type;
     PetscCall(Cell(comm, joints, r, "type", &type));
     PetscCheck(!type.empty() && type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") == std::string::npos, comm, PETSC_ERR_USER_INPUT, "%s line %d: joint type '%s' must be lower-case letters and digits (it names the options -joint_<type>_*)", joints.path.c_str(), joints.lines[r], type.c_str());
-    if (!types.count(type)) PetscCall(JointTypeFromOptions(comm, type, &types[type], scene));
     PetscInt  id, pa, pb;
     PetscReal n[3], t[3];
     PetscCall(IntCell(comm, joints, r, "id", &id));
@@ -372,6 +440,10 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
       PetscCall(RealCell(comm, joints, r, "x", &pos[0]));
       PetscCall(RealCell(comm, joints, r, "y", &pos[1]));
       PetscCall(RealCell(comm, joints, r, "z", &pos[2]));
+    }
+    if (!types.count(type)) {
+      const FirstJoint fj = {id, pa, pb, {n[0], n[1], n[2]}, {t[0], t[1], t[2]}, {pos[0], pos[1], pos[2]}};
+      PetscCall(JointTypeFromOptions(comm, a, type, fj, &types[type], scene));
     }
     PetscCall(BoltnetAssemblyAddJointAt(a, id, pa, pb, &types[type], n, t, pos));
   }
