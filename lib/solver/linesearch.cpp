@@ -4,6 +4,12 @@
 // state-switched tangent is exact only on the side of the kink where it was computed. A full Newton
 // step that crosses kinks can overshoot and, on the way back, cross them again: the iterates chatter
 // between states and Newton never converges (docs/solver.md shows such a case). This line search
+//   0. with joint states attached, a watchdog: takes the full (damped) step even when ||F|| grows,
+//      for up to `watchdog` iterations in a row without progress against the last reference point
+//      (a point whose ||F|| the iterates have not beaten since). When many joints leave stick in
+//      the same step, full Newton steps raise ||F|| before they converge; a monotone search rejects
+//      them and advances one state change per iteration. When the iterates chatter between states
+//      instead, the watchdog runs out and steps 1-3 take over from where they are;
 //   1. tries the full (damped) step and accepts it on sufficient decrease of ||F|| (as PETSc's bt);
 //   2. otherwise, if a joint-state function was attached (boltnet's assembly does it), bisects the
 //      step for the first point where a joint changes state and tries just past it: up to that point
@@ -26,10 +32,15 @@ namespace {
 struct LineSearchBoltnet {
   PetscReal            alpha     = 1e-4; // sufficient decrease parameter
   PetscInt             bisections = 12;  // resolution of the search for the first state change: 2^-n
+  PetscInt             watchdog  = 3;     // full steps allowed in a row without progress
+  PetscReal            growth    = 1e3;   // ... while ||F|| stays below growth * reference
+  PetscInt             watch     = 0;     // steps taken since the reference point
+  PetscReal            ref       = 0;     // ||F|| at the reference point
   BoltnetStateChangeFn statefn   = nullptr;
   void                *statectx  = nullptr;
   PetscInt             kinkSteps = 0;     // statistics, shown by -snes_linesearch_view
   PetscInt             backtracks = 0;
+  PetscInt             relaxed    = 0;    // full steps taken by the watchdog
 };
 
 // F at W = X - lambda Y; returns gnorm = inf when F could not be evaluated there.
@@ -78,6 +89,10 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
   }
   lambda = ls->damping;
 
+  if (snes->iter == 0) { // a new solve: the starting point is the reference
+    bn->watch = 0;
+    bn->ref   = fnorm;
+  }
   const PetscReal f2    = fnorm * fnorm;
   PetscBool       kinks = bn->statefn ? PETSC_TRUE : PETSC_FALSE;
   PetscReal       best = PETSC_INFINITY, bestlambda = 0; // the best point tried, for an inexact Jacobian
@@ -89,6 +104,12 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
     }
     if (gnorm * gnorm <= (1.0 - 2.0 * bn->alpha * lambda) * f2) {
       accepted = PETSC_TRUE;
+      break;
+    }
+    if (it == 0 && bn->statefn && bn->watch < bn->watchdog && std::isfinite(gnorm) && gnorm <= bn->growth * bn->ref) {
+      accepted = PETSC_TRUE; // the watchdog's full step
+      bn->relaxed++;
+      if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: watchdog takes the full step, ||F|| %g -> %g (%" PetscInt_FMT " of %" PetscInt_FMT " without progress)\n", (double)fnorm, (double)gnorm, bn->watch + 1, bn->watchdog));
       break;
     }
     if (kinks) { // look for the first joint state change on (0, lambda]
@@ -133,6 +154,11 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
     PetscCall(SNESLineSearchSetReason(ls, SNES_LINESEARCH_FAILED_REDUCT));
     PetscFunctionReturn(0);
   }
+  // Progress against the reference point resets the watchdog; any other step uses it up.
+  if (gnorm * gnorm <= (1.0 - 2.0 * bn->alpha) * bn->ref * bn->ref) {
+    bn->watch = 0;
+    bn->ref   = gnorm;
+  } else bn->watch++;
   PetscCall(SNESLineSearchPostCheck(ls, X, Y, W, &changed_y, &changed_w));
   if (changed_w) {
     PetscCall((*ls->ops->snesfunc)(snes, W, G));
@@ -152,9 +178,13 @@ PetscErrorCode SNESLineSearchSetFromOptions_Boltnet(SNESLineSearch ls, PetscOpti
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "SNESLineSearch boltnet options");
   PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_alpha", "Sufficient decrease parameter of ||F||^2", "SNESLineSearchBoltnet", bn->alpha, &bn->alpha, nullptr));
+  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_watchdog", "With joint states: full Newton steps allowed in a row without decreasing ||F|| below the last reference point (0: monotone search)", "SNESLineSearchBoltnet", bn->watchdog, &bn->watchdog, nullptr));
+  PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_growth", "The watchdog's full steps are taken while ||F|| stays below this multiple of the reference point's", "SNESLineSearchBoltnet", bn->growth, &bn->growth, nullptr));
   PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_bisections", "Bisections that locate the first joint state change along the step (resolution 2^-n)", "SNESLineSearchBoltnet", bn->bisections, &bn->bisections, nullptr));
   PetscOptionsHeadEnd();
   PetscCheck(bn->alpha > 0 && bn->alpha < 0.5, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_alpha %g must lie in (0, 0.5)", (double)bn->alpha);
+  PetscCheck(bn->watchdog >= 0, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_watchdog %" PetscInt_FMT " must be >= 0", bn->watchdog);
+  PetscCheck(bn->growth >= 1, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_growth %g must be >= 1", (double)bn->growth);
   PetscCheck(bn->bisections >= 1 && bn->bisections <= 50, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_bisections %" PetscInt_FMT " must lie in [1, 50]", bn->bisections);
   PetscFunctionReturn(0);
 }
@@ -166,8 +196,8 @@ PetscErrorCode SNESLineSearchView_Boltnet(SNESLineSearch ls, PetscViewer viewer)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii) {
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, %" PetscInt_FMT " bisections, joint states %s\n", (double)bn->alpha, bn->bisections, bn->statefn ? "attached" : "not attached (plain backtracking)"));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: steps limited to a state change %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->kinkSteps, bn->backtracks));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, watchdog %" PetscInt_FMT " steps below %g x reference, %" PetscInt_FMT " bisections, joint states %s\n", (double)bn->alpha, bn->watchdog, (double)bn->growth, bn->bisections, bn->statefn ? "attached" : "not attached (plain backtracking)"));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: watchdog full steps %" PetscInt_FMT ", steps limited to a state change %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->relaxed, bn->kinkSteps, bn->backtracks));
   }
   PetscFunctionReturn(0);
 }
