@@ -177,5 +177,8 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);
 PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx);
 // After a failed solve: the joints that changed state most often during it, with their states.
 PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg);
+// After a failed linear solve: the joints whose tangent at X has no stiffness in a translation
+// (e.g. sliding with kg = 0), the likely reason for a singular Jacobian; "" if none.
+PetscErrorCode AssemblyDescribeSingular(BoltnetAssembly a, Vec X, std::string &msg);
 
 } // namespace boltnet

@@ -39,6 +39,53 @@ PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void
   return Guard(PetscObjectComm((PetscObject)snes), [&] { return MonitorJointStatesImpl(snes, its, fnorm, ctx); });
 }
 
+namespace {
+// Concatenate a string from every rank, in rank order, on every rank.
+PetscErrorCode AllgatherText(BoltnetAssembly a, const std::string &mine, std::string &all)
+{
+  PetscFunctionBeginUser;
+  PetscMPIInt              len = (PetscMPIInt)mine.size();
+  std::vector<PetscMPIInt> lens(a->size), displs(a->size);
+  PetscCallMPI(MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, a->comm));
+  PetscMPIInt total = 0;
+  for (PetscMPIInt i = 0; i < a->size; ++i) {
+    displs[i] = total;
+    total += lens[i];
+  }
+  all.assign(total, ' ');
+  PetscCallMPI(MPI_Allgatherv(mine.data(), len, MPI_CHAR, all.data(), lens.data(), displs.data(), MPI_CHAR, a->comm));
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode AssemblyDescribeSingular(BoltnetAssembly a, Vec X, std::string &msg)
+{
+  std::vector<Response> resp;
+  std::ostringstream    loc;
+  PetscInt              n = 0;
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  static const char *const dir[3] = {"n", "t1", "t2"};
+  for (size_t i = 0; i < resp.size() && n < 10; ++i) {
+    double scale = 0;
+    for (int k = 0; k < 36; ++k) scale = std::max(scale, std::abs(resp[i].tangent[k]));
+    std::string none;
+    for (int d = 0; d < 3; ++d)
+      if (std::abs(resp[i].tangent[7 * d]) <= 1e-12 * scale || scale == 0) none += (none.empty() ? "" : ",") + std::string(dir[d]);
+    if (none.empty()) continue;
+    PetscInt key, nvar;
+    void    *data;
+    PetscCall(DMNetworkGetComponent(a->dm, a->jedges[i], 0, &key, &data, &nvar));
+    loc << "joint " << static_cast<JointComp *>(data)->id << " (" << stateName(resp[i].state) << ", no stiffness along " << none << "); ";
+    ++n;
+  }
+  std::string all;
+  PetscCall(AllgatherText(a, loc.str(), all));
+  while (!all.empty() && (all.back() == ' ' || all.back() == ';')) all.pop_back();
+  msg = all.empty() ? std::string() : "joints with no tangent stiffness in a direction (a singular Jacobian if nothing else holds it): " + all;
+  PetscFunctionReturn(0);
+}
+
 // After a failed solve: the joints that changed state most often during it, with their states.
 PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg)
 {
@@ -61,18 +108,9 @@ PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg)
     loc << "); ";
     ++n;
   }
-  // Gather the text to rank 0 and broadcast it (error messages are raised collectively).
-  std::string       mine   = loc.str();
-  PetscMPIInt       len    = (PetscMPIInt)mine.size();
-  std::vector<PetscMPIInt> lens(a->size), displs(a->size);
-  PetscCallMPI(MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, a->comm));
-  PetscMPIInt total = 0;
-  for (PetscMPIInt i = 0; i < a->size; ++i) {
-    displs[i] = total;
-    total += lens[i];
-  }
-  std::string all(total, ' ');
-  PetscCallMPI(MPI_Allgatherv(mine.data(), len, MPI_CHAR, all.data(), lens.data(), displs.data(), MPI_CHAR, a->comm));
+  // Every rank gets the whole text (error messages are raised collectively).
+  std::string all;
+  PetscCall(AllgatherText(a, loc.str(), all));
   msg = all.empty() ? std::string("no joint changed state more than once") : "joints that kept changing state: " + all;
   PetscFunctionReturn(0);
 }

@@ -127,6 +127,19 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
       }
       std::string chatter;
       PetscCall(AssemblyDescribeChatter(a, chatter));
+      if (reason == SNES_DIVERGED_LINEAR_SOLVE) {
+        // A failed factorisation leaves MUMPS in an error state that the next solve would raise as
+        // an error: start the next attempt from a fresh factorisation. And name the joints that
+        // may have made the tangent singular.
+        KSP         ksp;
+        PC          pc;
+        std::string singular;
+        PetscCall(SNESGetKSP(a->snes, &ksp));
+        PetscCall(KSPGetPC(ksp, &pc));
+        PetscCall(PCReset(pc));
+        PetscCall(AssemblyDescribeSingular(a, Xtry, singular));
+        if (!singular.empty()) chatter += "; " + singular;
+      }
       if (cuts >= a->max_cuts) {
         std::ostringstream m;
         m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << " did not converge (" << SNESConvergedReasons[reason] << " after " << its
