@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <filesystem>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -407,12 +408,17 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
       std::string file, part;
       PetscCall(Cell(comm, patches, r, "mesh", &file));
       PetscCall(Cell(comm, patches, r, "part", &part));
-      file = (file.empty() || file[0] == '/' || !scene->from_file.count("scene_patches")) ? file : scene->dir + "/" + file;
+      // A relative mesh path is relative to the patches table that names it.
+      const std::string tdir = std::filesystem::path(patches.path).parent_path().string();
+      if (!file.empty() && file[0] != '/' && !tdir.empty()) file = tdir + "/" + file;
       std::map<std::string, QuadMesh> parts;
-      PetscCall(Guard(comm, [&] {
+      std::string                     why;
+      try {
         parts = ReadGmsh(file);
-        return PetscErrorCode(0);
-      }));
+      } catch (const std::exception &e) {
+        why = e.what();
+      }
+      PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s line %d: %s", patches.path.c_str(), patches.lines[r], why.c_str());
       PetscCheck(parts.count(part), comm, PETSC_ERR_USER_INPUT, "%s line %d: mesh '%s' has no part (physical surface) '%s'", patches.path.c_str(), patches.lines[r], file.c_str(), part.c_str());
       mesh = parts[part];
       for (auto &xn : mesh.x)
