@@ -1,5 +1,6 @@
 // DMNetwork assembly: patches are vertices, joints are edges (docs/architecture.md).
 #include "network/assembly.hpp"
+#include "network/gather.hpp"
 #include "core/guard.hpp"
 #include "mesh/cut.hpp"
 #include "mesh/mesh.hpp"
@@ -893,18 +894,7 @@ PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord>
     mine.push_back(rec);
   }
 
-  // Gather as raw bytes: JointRecord is plain data.
-  const PetscMPIInt nbytes = (PetscMPIInt)(mine.size() * sizeof(JointRecord));
-  std::vector<PetscMPIInt> counts(a->size), displs(a->size);
-  PetscCallMPI(MPI_Gather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, a->comm));
-  PetscMPIInt total = 0;
-  if (a->rank == 0)
-    for (PetscMPIInt i = 0; i < a->size; ++i) {
-      displs[i] = total;
-      total += counts[i];
-    }
-  records.assign(a->rank == 0 ? total / sizeof(JointRecord) : 0, JointRecord{});
-  PetscCallMPI(MPI_Gatherv(mine.data(), nbytes, MPI_BYTE, records.data(), counts.data(), displs.data(), MPI_BYTE, 0, a->comm));
+  PetscCall(GatherToZero(a->comm, mine, records));
   std::sort(records.begin(), records.end(), [](const JointRecord &l, const JointRecord &r) { return l.joint < r.joint; });
   PetscFunctionReturn(0);
 }

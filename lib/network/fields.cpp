@@ -1,6 +1,7 @@
 // The displacement field gathered to rank 0 (network/fields.hpp). X is scattered whole to rank 0;
 // each rank names, for the vertices it owns and the edges it holds, where their dof start in X.
 #include "network/fields.hpp"
+#include "network/gather.hpp"
 
 #include <algorithm>
 #include <map>
@@ -16,23 +17,6 @@ struct Offsets {
   PetscInt a, b;   // global offsets (b: joints only)
   PetscInt pa, pb; // joints: positions in a->patches of the patches of their two nodes
 };
-
-PetscErrorCode GatherOffsets(BoltnetAssembly a, const std::vector<Offsets> &mine, std::vector<Offsets> &all)
-{
-  PetscFunctionBeginUser;
-  const PetscMPIInt        nbytes = (PetscMPIInt)(mine.size() * sizeof(Offsets));
-  std::vector<PetscMPIInt> counts(a->size), displs(a->size);
-  PetscCallMPI(MPI_Gather(&nbytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, a->comm));
-  PetscMPIInt total = 0;
-  if (a->rank == 0)
-    for (PetscMPIInt i = 0; i < a->size; ++i) {
-      displs[i] = total;
-      total += counts[i];
-    }
-  all.assign(a->rank == 0 ? total / sizeof(Offsets) : 0, Offsets{});
-  PetscCallMPI(MPI_Gatherv(mine.data(), nbytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0, a->comm));
-  PetscFunctionReturn(0);
-}
 
 // The reference point of a joint's attachment to one side: a rigid patch's node; on a shell patch,
 // the point of the bolt axis at the mean axial position of the footprint nodes (the mid-surface).
@@ -86,8 +70,8 @@ PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &p
     PetscCall(DMNetworkGetGlobalVecOffset(a->dm, cone[1], ALL_COMPONENTS, &gb));
     emine.push_back({j->index, ga + kNodeDof * j->node_a, gb + kNodeDof * j->node_b, static_cast<const PatchComp *>(va)->index, static_cast<const PatchComp *>(vb)->index});
   }
-  PetscCall(GatherOffsets(a, vmine, vall));
-  PetscCall(GatherOffsets(a, emine, eall));
+  PetscCall(GatherToZero(a->comm, vmine, vall));
+  PetscCall(GatherToZero(a->comm, emine, eall));
   PetscCall(AssemblyGatherRecords(a, rec));
   PetscCall(VecScatterCreateToZero(a->X, &scatter, &X0));
   PetscCall(VecScatterBegin(scatter, a->X, X0, INSERT_VALUES, SCATTER_FORWARD));
