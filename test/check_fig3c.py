@@ -30,6 +30,17 @@ def h_inverse(y, kg, kc, j):
     return s * w
 
 
+def force_first_step(F, w, ke, kg, kc, j, G):
+    """One step of the reference under the applied force F from the committed slip w:
+    returns (du, the new slip w, state)."""
+    ff = F - h(w, kg, kc, j)
+    if abs(ff) <= G * (1 + 1e-9):
+        return w + ff / ke, w, "stick"
+    s = 1.0 if ff > 0 else -1.0
+    w = h_inverse(F - G * s, kg, kc, j)
+    return w + G * s / ke, w, ("contact" if abs(w) > j * (1 + 1e-12) else "slide")
+
+
 def main():
     path = sys.argv[1]
     ke, kg, kc, j, G = map(float, sys.argv[2:7])
@@ -41,14 +52,7 @@ def main():
     states = set()
     for row in rows:
         F = float(row["load"])
-        ff = F - h(w, kg, kc, j)
-        if abs(ff) <= G * (1 + 1e-9):
-            du, state = w + ff / ke, "stick"
-        else:
-            s = 1.0 if ff > 0 else -1.0
-            w = h_inverse(F - G * s, kg, kc, j)
-            du = w + G * s / ke
-            state = "contact" if abs(w) > j else "slide"
+        du, w, state = force_first_step(F, w, ke, kg, kc, j, G)
         got_du, got_f = float(row["du_t1"]), float(row["f_t1"])
         err = abs(got_du - du) / max(abs(du), 1e-3 * j)
         worst = max(worst, err)

@@ -17,7 +17,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from check_fig3c import h, h_inverse  # noqa: E402
+from check_fig3c import force_first_step, h  # noqa: E402
 
 ap = argparse.ArgumentParser()
 ap.add_argument("mode", choices=["force1d", "disp1d"])
@@ -50,14 +50,7 @@ for jid, jr in by_joint.items():
         load = float(r["load"])
         if a.mode == "force1d":
             F = a.share * load
-            ff = F - h(w, kg, kc, j)
-            if abs(ff) <= G * (1 + 1e-9):
-                du, state = w + ff / ke, "stick"
-            else:
-                s = 1.0 if ff > 0 else -1.0
-                w = h_inverse(F - G * s, kg, kc, j)
-                du = w + G * s / ke
-                state = "contact" if abs(w) > j * (1 + 1e-12) else "slide"
+            du, w, state = force_first_step(F, w, ke, kg, kc, j, G)
         else:
             du = load
             q = ke * (du - w)
