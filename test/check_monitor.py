@@ -13,15 +13,22 @@ import re
 import sys
 
 pat = re.compile(r"^\s*(\d+) joints: stick (\d+) slide (\d+) contact (\d+) open (\d+) linear (\d+) \| changed (\d+)")
-solves, current = [], None
+# Joints solved as linear springs that the full law sends out of stick are released, and the same
+# step solves on (-joint_stuck_linear, docs/solver.md): that solve continues the step's.
+released = re.compile(r"^\s*step \d+: \d+ joints solved as linear springs would leave")
+solves, current, go_on = [], None, False
 for line in open(sys.argv[1]):
+    if released.match(line):
+        go_on = True
+        continue
     m = pat.match(line)
     if not m:
         continue
     it, *counts = map(int, m.groups())
-    if it == 0:
+    if it == 0 and not go_on:
         current = []
         solves.append(current)
+    go_on = False
     current.append(counts)
 rows = list(csv.DictReader(open(sys.argv[2])))
 steps = collections.defaultdict(collections.Counter)

@@ -760,6 +760,78 @@ TEST(PathDependence, EvaluateIsPureInTheCommittedHistory)
 }
 
 // =============================================================================================
+// 7b. Frozen joints (-joint_stuck_linear): the linear state of the committed history, no state test.
+
+// Where the law sticks (or the clearance is open), the frozen evaluation is the law, bit for bit;
+// utilization() < 1 there (the law's own test, written from the model: |ke (du - w)| < G).
+TEST(FrozenJoint, IdenticalToTheLawWhereItSticks)
+{
+  std::mt19937 rng(7);
+  for (const Params &p : frictionVariants())
+    for (int k = 0; k < 50; ++k) {
+      const FrictionSample s = frictionSample(rng, p, State::Stick);
+      for (Tangent t : {Tangent::Consistent, Tangent::Paper}) {
+        const Response law = evaluate(p, s.h, s.du, t), frozen = evaluate(p, s.h, s.du, t, true);
+        ASSERT_EQ(law.state, State::Stick);
+        EXPECT_EQ(frozen.state, State::Stick);
+        EXPECT_EQ(law.force, frozen.force);
+        EXPECT_EQ(law.tangent, frozen.tangent);
+        EXPECT_EQ(law.trial.slip[0], frozen.trial.slip[0]);
+        EXPECT_EQ(law.trial.slip[1], frozen.trial.slip[1]);
+      }
+      const double G = thresholdOf(p, s.du[0]);
+      const double a = p.kt * std::hypot(s.du[1] - s.h.slip[0], s.du[2] - s.h.slip[1]);
+      EXPECT_TRUE(Near(utilization(p, s.h, s.du), a / G, kClosed));
+      EXPECT_LT(utilization(p, s.h, s.du), 1.0);
+    }
+  const Params c = contactParams();
+  const Vec6   du = jumpOf(0.01, 0.06, -0.08, 0, 0, 0); // |du_t| = 0.1 < gap 0.15
+  const Response law = evaluate(c, History{}, du, Tangent::Consistent), frozen = evaluate(c, History{}, du, Tangent::Consistent, true);
+  EXPECT_EQ(law.state, State::Open);
+  EXPECT_EQ(law.force, frozen.force);
+  EXPECT_EQ(law.tangent, frozen.tangent);
+  EXPECT_TRUE(Near(utilization(c, History{}, du), 0.1 / 0.15, kClosed));
+}
+
+// Beyond the threshold the frozen joint is the affine stick spring of its committed slip (closed
+// form: F = ke (du - w) + h(w) in 1D), while the law slides; utilization() > 1 says so.
+TEST(FrozenJoint, AffineStickSpringBeyondTheThreshold)
+{
+  const Params  p = dyadicFriction(); // G/ke = 1/8
+  const History fresh{};
+  for (double du : {0.25, 0.5, -1.0}) {
+    const Vec6     j      = jumpOf(0, du, 0);
+    const Response frozen = evaluate(p, fresh, j, Tangent::Consistent, true);
+    const Response law    = evaluate(p, fresh, j, Tangent::Consistent);
+    EXPECT_EQ(frozen.state, State::Stick);
+    EXPECT_NE(law.state, State::Stick);
+    EXPECT_TRUE(Near(frozen.force[1], p.kt * du, kClosed));
+    EXPECT_TRUE(Near(K(frozen.tangent, 1, 1), p.kt, kClosed));
+    EXPECT_TRUE(Near(utilization(p, fresh, j), std::abs(du) * p.kt / 128.0, kClosed));
+    EXPECT_GT(utilization(p, fresh, j), 1.0);
+  }
+  // A committed slip in bearing (w = 3/8 > j): the frozen spring keeps h(w) = kg j + kc (w - j).
+  History h;
+  h.slip[0]         = 0.375;
+  const Vec6     j  = jumpOf(0, 0.375 + 0.0625, 0);
+  const Response fr = evaluate(p, h, j, Tangent::Consistent, true);
+  EXPECT_TRUE(Near(fr.force[1], p.kt * 0.0625 + slipResistance1D(p, 0.375), kClosed));
+  EXPECT_TRUE(Near(utilization(p, h, j), 0.5, kClosed));
+  // Contact law beyond the clearance: frozen stays open (k du), the law bears.
+  const Params   c  = contactParams();
+  const Vec6     jc = jumpOf(0, 0.3, 0);
+  EXPECT_TRUE(Near(evaluate(c, History{}, jc, Tangent::Consistent, true).force[1], c.kt * 0.3, kClosed));
+  EXPECT_EQ(evaluate(c, History{}, jc, Tangent::Consistent).state, State::Contact);
+  EXPECT_TRUE(Near(utilization(c, History{}, jc), 2.0, kClosed));
+  // Springs have no state: utilization 0. No room (G = 0, gap = 0): infinite unless at rest.
+  EXPECT_EQ(utilization(springParams(), History{}, jc), 0.0);
+  Params g0 = p;
+  g0.pretension = 0;
+  EXPECT_TRUE(std::isinf(utilization(g0, History{}, jumpOf(0, 1e-9, 0))));
+  EXPECT_EQ(utilization(g0, History{}, jumpOf(0, 0, 0)), 0.0);
+}
+
+// =============================================================================================
 // 8. Clamp-force coupling.
 
 // frictionThreshold: G = mu nf max(0, Pc - phi F_n), including compression (F_n < 0) and G = 0 beyond F_n = Pc/phi.

@@ -112,7 +112,9 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].newton_its;
   j << "],\n  \"cutbacks_per_step\": [";
   for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].cutbacks;
-  j << "],\n  \"most_loaded_joint\": ";
+  j << "],\n  \"stuck_linear\": " << (a->stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << (a->joint_steps ? (double)a->frozen_joint_steps / (double)a->joint_steps : 0.0)
+    << ",\n  \"released\": " << a->released << ",\n  \"jacobians_assembled\": " << a->jac_assembled << ",\n  \"jacobians_reused\": " << a->jac_reused;
+  j << ",\n  \"most_loaded_joint\": ";
   if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << out->most_load << ", \"in_plane_force\": " << out->most_force << "}";
   else j << "null";
   j << ",\n  \"identified_joint_types\": " << out->identified;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace boltnet {
@@ -59,9 +60,9 @@ void evaluateSpring(const Params &p, const Vec6 &du, Response &r)
 
 // Paper sect. 2.1: F_t = k du_t for r <= j and (k j + k' (r - j)) du_t / r beyond, written as
 // k du_t + (k' - k) <r - j>+ d / r with d = du_t - offset (the offset moves the clearance circle).
-void evaluateContact(const Params &p, const Vec6 &du, Tangent tangent, Response &r)
+void evaluateContact(const Params &p, const Vec6 &du, Tangent tangent, bool frozen, Response &r)
 {
-  const Bearing b = bearing(p.kc - p.kt, p.gap, du[1] - p.offset[0], du[2] - p.offset[1]);
+  const Bearing b = frozen ? Bearing{} : bearing(p.kc - p.kt, p.gap, du[1] - p.offset[0], du[2] - p.offset[1]);
   r.force[1]      = p.kt * du[1] + b.force[0];
   r.force[2]      = p.kt * du[2] + b.force[1];
   r.state         = b.active ? State::Contact : State::Open;
@@ -77,7 +78,7 @@ void evaluateContact(const Params &p, const Vec6 &du, Tangent tangent, Response 
 // Paper sect. 2.2 as an incremental law: Jenkins element (ke, G) on the slip w, plus the slip
 // resistance h(w) = kg w + (kc - kg) <|w - c| - j>+ m. Monotonic loading gives the paper's
 // F = ke du, G + kg (du - G/ke), G + kg j + kc (du - G/ke - j) exactly (docs/joint-laws.md).
-void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent tangent, Response &r)
+void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent tangent, bool frozen, Response &r)
 {
   const double ke = p.kt;
   const double Fn = p.kn * du[0];
@@ -86,7 +87,7 @@ void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent
 
   const double Ftr[2] = {ke * (du[1] - h.slip[0]), ke * (du[2] - h.slip[1])};
   const double a      = std::hypot(Ftr[0], Ftr[1]);
-  const bool   slide  = a > G * (1.0 + 1e-10) && a > 0.0;
+  const bool   slide  = !frozen && a > G * (1.0 + 1e-10) && a > 0.0;
 
   double w[2] = {h.slip[0], h.slip[1]};
   double Ff[2] = {Ftr[0], Ftr[1]};
@@ -139,18 +140,36 @@ double frictionThreshold(const Params &p, double normal_force)
   return p.mu * p.nf * std::max(0.0, p.pretension - p.clamp_coupling * normal_force);
 }
 
-Response evaluate(const Params &p, const History &committed, const Vec6 &jump, Tangent tangent)
+Response evaluate(const Params &p, const History &committed, const Vec6 &jump, Tangent tangent, bool frozen)
 {
   Response r;
   r.trial = committed;
   linearParts(p, jump, r);
   switch (p.law) {
   case Law::Spring: evaluateSpring(p, jump, r); break;
-  case Law::Contact: evaluateContact(p, jump, tangent, r); break;
-  case Law::Friction: evaluateFriction(p, committed, jump, tangent, r); break;
+  case Law::Contact: evaluateContact(p, jump, tangent, frozen, r); break;
+  case Law::Friction: evaluateFriction(p, committed, jump, tangent, frozen, r); break;
   }
   r.trial.state = static_cast<int>(r.state);
   return r;
+}
+
+double utilization(const Params &p, const History &h, const Vec6 &du)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  switch (p.law) {
+  case Law::Spring: return 0.0;
+  case Law::Contact: {
+    const double r = std::hypot(du[1] - p.offset[0], du[2] - p.offset[1]);
+    return p.gap > 0 ? r / p.gap : (r > 0 ? inf : 0.0);
+  }
+  case Law::Friction: {
+    const double a = p.kt * std::hypot(du[1] - h.slip[0], du[2] - h.slip[1]);
+    const double G = frictionThreshold(p, p.kn * du[0]);
+    return G > 0 ? a / G : (a > 0 ? inf : 0.0);
+  }
+  }
+  return inf;
 }
 
 std::string validate(const Params &p)

@@ -59,7 +59,16 @@ struct Response {
 double frictionThreshold(const Params &p, double normal_force);
 
 // Evaluate the law at the local jump du = (du_n, du_t1, du_t2, dth_n, dth_t1, dth_t2).
-Response evaluate(const Params &p, const History &committed, const Vec6 &jump, Tangent tangent);
+// frozen: keep the joint in the linear state it has with its committed history (friction: stick
+// with the committed slip; contact: the clearance open), without the state test: an affine spring
+// whose force and tangent are, bit for bit, the law's wherever the law is in that state
+// (utilization() < 1). Used for joints that stay stuck (docs/solver.md, "Linear where it can be").
+Response evaluate(const Params &p, const History &committed, const Vec6 &jump, Tangent tangent, bool frozen = false);
+
+// How close the joint is, at this jump with this committed history, to leaving its linear state:
+// friction |ke (du_t - w)| / G (stick while <= 1), contact |du_t - offset| / gap (open while <= 1),
+// spring 0 (always linear). Infinity where the linear state has no room (G = 0 or gap = 0).
+double utilization(const Params &p, const History &committed, const Vec6 &jump);
 
 // Check the parameters; returns an empty string when valid, else a message naming the parameter.
 std::string validate(const Params &p);

@@ -230,11 +230,14 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsInt("-patch_max_nodes", "Largest shell patch in nodes: a larger part is cut into strips joined by seam edges so that ranks can share it (0: never cut; -1: automatic, about eight patches per rank, none under 32 nodes, no cut on one rank)", "BoltnetAssemblySetFromOptions", a->patch_max_nodes, &a->patch_max_nodes, nullptr));
   PetscCall(PetscOptionsBool("-patch_balance", "Distribute the patches over the ranks by dof with METIS (false: PETSc's partitioner, by edge count)", "BoltnetAssemblySetFromOptions", a->balance, &a->balance, nullptr));
   PetscCall(PetscOptionsReal("-coupling_penalty", "Penalty of the rigid footprint links, as a multiple of the shell's membrane stiffness A11 (N/mm)", "BoltnetAssemblySetFromOptions", a->coupling_penalty, &a->coupling_penalty, nullptr));
+  PetscCall(PetscOptionsBool("-joint_stuck_linear", "Solve joints that stay stuck as linear springs (no state logic) and keep the Jacobian and its factorisation while no joint's tangent changes; every such joint is checked with the full law before a step is accepted", "BoltnetAssemblySetFromOptions", a->stuck_linear, &a->stuck_linear, nullptr));
+  PetscCall(PetscOptionsReal("-joint_stuck_margin", "Solve a joint as a linear spring in a step when its predicted utilization (trial force / friction threshold, or jump / clearance) stays below this", "BoltnetAssemblySetFromOptions", a->stuck_margin, &a->stuck_margin, nullptr));
   PetscCall(PetscOptionsBool("-joint_monitor", "Print, per Newton iteration, the joints in each state and how many changed (summed over ranks)", "BoltnetAssemblySetFromOptions", a->monitor_states, &a->monitor_states, nullptr));
   PetscOptionsEnd();
   PetscCheck(a->coupling_radius > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_radius %g must be > 0", (double)a->coupling_radius);
   PetscCheck(a->patch_max_nodes >= -1, a->comm, PETSC_ERR_USER_INPUT, "-patch_max_nodes %" PetscInt_FMT " must be -1 (automatic), 0 (never cut) or a positive node count", a->patch_max_nodes);
   PetscCheck(a->coupling_penalty > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_penalty %g must be > 0", (double)a->coupling_penalty);
+  PetscCheck(a->stuck_margin >= 0 && a->stuck_margin <= 1, a->comm, PETSC_ERR_USER_INPUT, "-joint_stuck_margin %g must lie in [0, 1] (0: no joint is frozen)", (double)a->stuck_margin);
   PetscCheck(a->max_cuts >= 0 && a->max_cuts <= 60, a->comm, PETSC_ERR_USER_INPUT, "-load_max_cuts %" PetscInt_FMT " must lie in [0, 60]", a->max_cuts);
   a->tangent               = static_cast<Tangent>(t);
   a->coupling_type         = static_cast<CouplingType>(ct);

@@ -8,6 +8,7 @@
 #include <metis.h>
 
 #include <algorithm>
+#include <cstring>
 #include <functional>
 #include <map>
 #include <set>
@@ -676,17 +677,18 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
 
 namespace {
 // The joints evaluated from the local (ghosted) vector x.
-PetscErrorCode EvaluateJointsLocal(BoltnetAssembly a, const PetscScalar *x, std::vector<Response> &out, std::vector<Vec6> *jumps)
+PetscErrorCode EvaluateJointsLocal(BoltnetAssembly a, const PetscScalar *x, std::vector<Response> &out, std::vector<Vec6> *jumps, bool full_law)
 {
   PetscFunctionBeginUser;
   out.resize(a->jedges.size());
   if (jumps) jumps->resize(a->jedges.size());
+  const bool any_frozen = !full_law && a->frozen.size() == a->jedges.size();
   for (size_t i = 0; i < a->jedges.size(); ++i) {
     EdgeView ev;
     PetscInt oa, ob;
     PetscCall(GetEdgeLocal(a->dm, a->jedges[i], &ev, &oa, &ob));
     const Vec6 du = LocalJump(ev.joint->R, x + oa, x + ob);
-    out[i]        = evaluate(ev.joint->params, a->committed[i], du, a->tangent);
+    out[i]        = evaluate(ev.joint->params, a->committed[i], du, a->tangent, any_frozen && a->frozen[i]);
     if (jumps) (*jumps)[i] = du;
   }
   PetscFunctionReturn(0);
@@ -704,13 +706,13 @@ static PetscErrorCode GetLocalX(BoltnetAssembly a, Vec X, Vec *Xl, const PetscSc
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps)
+PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps, bool full_law)
 {
   Vec                Xl;
   const PetscScalar *x;
   PetscFunctionBeginUser;
   PetscCall(GetLocalX(a, X, &Xl, &x));
-  PetscCall(EvaluateJointsLocal(a, x, out, jumps));
+  PetscCall(EvaluateJointsLocal(a, x, out, jumps, full_law));
   PetscCall(VecRestoreArrayRead(Xl, &x));
   PetscCall(DMRestoreLocalVector(a->dm, &Xl));
   PetscFunctionReturn(0);
@@ -726,7 +728,7 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   PetscFunctionBeginUser;
   // One ghost update of X, for the joints and the patches alike.
   PetscCall(GetLocalX(a, X, &Xl, &xl));
-  PetscCall(EvaluateJointsLocal(a, xl, resp, nullptr));
+  PetscCall(EvaluateJointsLocal(a, xl, resp, nullptr, false));
   PetscCall(DMGetLocalVector(a->dm, &Fl));
   PetscCall(VecSet(Fl, 0.0));
   PetscCall(VecGetArray(Fl, &f));
@@ -792,6 +794,18 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   std::vector<Response> resp;
   PetscFunctionBeginUser;
   PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  // Linear where it can be: the patches and seams are linear, so when no joint's tangent differs
+  // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
+  // object state, and PCSetUp then keeps the factorisation too.
+  if (a->stuck_linear && J == P && P == a->J && a->jac_valid) {
+    PetscMPIInt changed = 0, any;
+    for (size_t k = 0; k < resp.size() && !changed; ++k) changed = std::memcmp(resp[k].tangent.data(), a->jac_tangent[k].data(), sizeof(Mat6)) != 0;
+    PetscCallMPI(MPIU_Allreduce(&changed, &any, 1, MPI_INT, MPI_LOR, a->comm));
+    if (!any) {
+      ++a->jac_reused;
+      PetscFunctionReturn(0);
+    }
+  }
   PetscCall(MatZeroEntries(P));
   for (size_t k = 0; k < a->jedges.size(); ++k) {
     EdgeView    ev;
@@ -832,6 +846,10 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatZeroRows(P, (PetscInt)a->dirichlet_rows.size(), a->dirichlet_rows.data(), 1.0, nullptr, nullptr));
   PetscCall(MatNorm(P, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
+  ++a->jac_assembled;
+  a->jac_valid = (P == a->J) ? PETSC_TRUE : PETSC_FALSE;
+  a->jac_tangent.resize(resp.size());
+  for (size_t k = 0; k < resp.size(); ++k) a->jac_tangent[k] = resp[k].tangent;
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -866,8 +884,69 @@ PetscErrorCode AssemblyStateCounts(BoltnetAssembly a, Vec X, PetscInt counts[5])
 PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X)
 {
   PetscFunctionBeginUser;
-  PetscCall(AssemblyEvaluateJoints(a, X, a->accepted, &a->accepted_jump));
+  PetscCall(AssemblyEvaluateJoints(a, X, a->accepted, &a->accepted_jump, true));
   for (size_t i = 0; i < a->accepted.size(); ++i) a->committed[i] = a->accepted[i].trial;
+  // Utilization with the new history, for the next step's choice of frozen joints.
+  a->util_before = a->util_now;
+  a->util_now.resize(a->jedges.size());
+  for (size_t i = 0; i < a->jedges.size(); ++i) {
+    EdgeView ev;
+    PetscCall(GetEdge(a->dm, a->jedges[i], &ev));
+    a->util_now[i] = utilization(ev.joint->params, a->committed[i], a->accepted_jump[i]);
+  }
+  if (!a->util_ready) a->util_before = a->util_now;
+  a->util_ready = PETSC_TRUE;
+  a->frozen.clear();
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyFreezeStuck(BoltnetAssembly a, PetscReal increment)
+{
+  PetscFunctionBeginUser;
+  a->frozen.clear();
+  if (!a->stuck_linear) PetscFunctionReturn(0);
+  if (!a->util_ready) { // before the first step: at the initial state (collective: every rank)
+    std::vector<Response> r;
+    std::vector<Vec6>     du;
+    PetscCall(AssemblyEvaluateJoints(a, a->X, r, &du, true));
+    a->util_now.resize(a->jedges.size());
+    for (size_t i = 0; i < a->jedges.size(); ++i) {
+      EdgeView ev;
+      PetscCall(GetEdge(a->dm, a->jedges[i], &ev));
+      a->util_now[i] = utilization(ev.joint->params, a->committed[i], du[i]);
+    }
+    a->util_before = a->util_now;
+    a->util_ready  = PETSC_TRUE;
+  }
+  // Predicted utilization at the end of the step: the last step's change, scaled to this increment.
+  const PetscReal ratio = a->last_increment != 0 ? std::abs(increment / a->last_increment) : 0.0;
+  PetscInt        loc[2] = {0, (PetscInt)a->jedges.size()}, glob[2];
+  a->frozen.assign(a->jedges.size(), 0);
+  for (size_t i = 0; i < a->jedges.size(); ++i) {
+    const PetscReal pred = a->util_now[i] + std::abs(a->util_now[i] - a->util_before[i]) * ratio;
+    a->frozen[i]         = pred < a->stuck_margin;
+    loc[0] += a->frozen[i];
+  }
+  PetscCall(MPIU_Allreduce(loc, glob, 2, MPIU_INT, MPI_SUM, a->comm));
+  a->frozen_joint_steps += glob[0];
+  a->joint_steps += glob[1];
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyReleaseUnstuck(BoltnetAssembly a, Vec X, PetscInt *nreleased)
+{
+  std::vector<Response> frozen, full;
+  PetscInt              n = 0;
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, frozen));
+  PetscCall(AssemblyEvaluateJoints(a, X, full, nullptr, true));
+  for (size_t i = 0; i < a->frozen.size(); ++i)
+    if (a->frozen[i] && full[i].state != frozen[i].state) {
+      a->frozen[i] = 0;
+      ++n;
+    }
+  PetscCall(MPIU_Allreduce(&n, nreleased, 1, MPIU_INT, MPI_SUM, a->comm));
+  a->released += *nreleased;
   PetscFunctionReturn(0);
 }
 
@@ -875,7 +954,7 @@ PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord>
 {
   std::vector<JointRecord> mine;
   PetscFunctionBeginUser;
-  if (a->accepted.size() != a->jedges.size()) PetscCall(AssemblyEvaluateJoints(a, a->X, a->accepted, &a->accepted_jump)); // before the first step
+  if (a->accepted.size() != a->jedges.size()) PetscCall(AssemblyEvaluateJoints(a, a->X, a->accepted, &a->accepted_jump, true)); // before the first step
   for (size_t k = 0; k < a->jedges.size(); ++k) {
     EdgeView ev;
     PetscCall(GetEdge(a->dm, a->jedges[k], &ev));

@@ -106,6 +106,10 @@ struct _p_BoltnetAssembly {
   boltnet::Tangent tangent        = boltnet::Tangent::Consistent; // docs/solver.md: why
   PetscInt         max_cuts       = 8;
   PetscBool        monitor_states = PETSC_FALSE;
+  // Linear where it can be (docs/solver.md): joints that stay stuck are solved as linear springs,
+  // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
+  PetscBool stuck_linear = PETSC_TRUE;
+  PetscReal stuck_margin = 0.8; // freeze a joint whose predicted utilization stays below this
   PetscBool        setfromoptions_called = PETSC_FALSE;
 
   // Network and solver.
@@ -129,6 +133,18 @@ struct _p_BoltnetAssembly {
   // Joint states at each Newton iterate of the current solve (local joints), for the monitor and
   // for naming the joints that kept changing state when a step fails.
   std::vector<std::vector<PetscInt>> state_trace;
+  // Joints solved as linear springs in the current attempt (1: frozen; empty: none), their
+  // utilization (law.hpp) at the last two converged steps, and the last step's load increment.
+  std::vector<char>      frozen;
+  std::vector<PetscReal> util_now, util_before;
+  PetscReal              last_increment = 0;
+  PetscBool              util_ready     = PETSC_FALSE; // util_now holds the last converged step's
+  // The joint tangents assembled into J (valid only while jac_valid) and the bookkeeping.
+  std::vector<boltnet::Mat6> jac_tangent;
+  PetscBool                  jac_valid = PETSC_FALSE;
+  PetscInt jac_assembled = 0, jac_reused = 0;     // Jacobian evaluations assembled / kept
+  PetscInt frozen_joint_steps = 0, joint_steps = 0; // summed over attempts: joints frozen / all
+  PetscInt released = 0;                          // frozen joints the full law sent out of stick
   PetscBool                          user_atol = PETSC_FALSE; // -snes_atol given: keep it
   PetscReal                          jnorm     = 0;           // ||J||_inf of the last Jacobian
 
@@ -159,8 +175,15 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh,
 PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a);
 PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx);
 PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx);
-// Evaluate every local joint at X against the committed history (no side effects).
-PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps = nullptr);
+// Evaluate every local joint at X against the committed history (no side effects): as the solver
+// sees it (frozen joints as linear springs), or with the full law everywhere.
+PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps = nullptr, bool full_law = false);
+// Before an attempt at a step of the given load increment: choose the joints to solve as linear
+// springs (those whose predicted utilization stays below -joint_stuck_margin).
+PetscErrorCode AssemblyFreezeStuck(BoltnetAssembly a, PetscReal increment);
+// After a converged attempt: check every frozen joint with the full law at X; those that would not
+// stay in their linear state are released (no longer frozen). *nreleased is the global count.
+PetscErrorCode AssemblyReleaseUnstuck(BoltnetAssembly a, Vec X, PetscInt *nreleased);
 // Joints whose state at X differs from their state at ref (global count).
 PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx);
 // Global counts of joints per State at X.

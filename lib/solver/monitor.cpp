@@ -18,7 +18,8 @@ PetscErrorCode MonitorJointStatesImpl(SNES snes, PetscInt its, PetscReal fnorm, 
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(AssemblyEvaluateJoints(a, X, r));
   if (its == 0) a->state_trace.assign(r.size(), {});
-  PetscInt loc[6] = {0, 0, 0, 0, 0, 0}, glob[6];
+  PetscInt loc[7] = {0, 0, 0, 0, 0, 0, 0}, glob[7];
+  for (char f : a->frozen) loc[6] += f;
   for (size_t i = 0; i < r.size(); ++i) {
     const PetscInt s = static_cast<PetscInt>(r[i].state);
     if (!a->state_trace[i].empty() && a->state_trace[i].back() != s) loc[5]++;
@@ -26,9 +27,9 @@ PetscErrorCode MonitorJointStatesImpl(SNES snes, PetscInt its, PetscReal fnorm, 
     loc[s]++;
   }
   if (!a->monitor_states) PetscFunctionReturn(0);
-  PetscCall(MPIU_Allreduce(loc, glob, 6, MPIU_INT, MPI_SUM, a->comm));
-  PetscCall(PetscPrintf(a->comm, "  %3" PetscInt_FMT " joints: stick %" PetscInt_FMT " slide %" PetscInt_FMT " contact %" PetscInt_FMT " open %" PetscInt_FMT " linear %" PetscInt_FMT " | changed %" PetscInt_FMT " | ||F|| %g\n", its,
-                        glob[static_cast<int>(State::Stick)], glob[static_cast<int>(State::Slide)], glob[static_cast<int>(State::Contact)], glob[static_cast<int>(State::Open)], glob[static_cast<int>(State::Linear)], glob[5], (double)fnorm));
+  PetscCall(MPIU_Allreduce(loc, glob, 7, MPIU_INT, MPI_SUM, a->comm));
+  PetscCall(PetscPrintf(a->comm, "  %3" PetscInt_FMT " joints: stick %" PetscInt_FMT " slide %" PetscInt_FMT " contact %" PetscInt_FMT " open %" PetscInt_FMT " linear %" PetscInt_FMT " | changed %" PetscInt_FMT " | as springs %" PetscInt_FMT " | ||F|| %g\n", its,
+                        glob[static_cast<int>(State::Stick)], glob[static_cast<int>(State::Slide)], glob[static_cast<int>(State::Contact)], glob[static_cast<int>(State::Open)], glob[static_cast<int>(State::Linear)], glob[5], glob[6], (double)fnorm));
   PetscFunctionReturn(0);
 }
 

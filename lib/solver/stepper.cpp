@@ -109,13 +109,34 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
       a->lambda_target     = last ? target : a->lambda + sub;
       PetscCall(VecCopy(a->X, Xtry));
       PetscCall(AssemblyApplyDirichlet(a, Xtry, a->lambda_target));
+      PetscCall(AssemblyFreezeStuck(a, a->lambda_target - a->lambda));
       PetscCall(SetStepTolerance(a, Xtry));
       PetscCall(SNESSolve(a->snes, nullptr, Xtry));
       SNESConvergedReason reason;
       PetscInt            its;
       PetscCall(SNESGetConvergedReason(a->snes, &reason));
       PetscCall(SNESGetIterationNumber(a->snes, &its));
+      // Joints solved as linear springs must still be stuck under the full law at the solution;
+      // those that are not are released and the solve goes on from there. What is accepted is
+      // then a solution of the full model.
+      // The step keeps one budget of -snes_max_it Newton iterations.
+      PetscInt maxit;
+      PetscCall(SNESGetTolerances(a->snes, nullptr, nullptr, nullptr, &maxit, nullptr));
+      while (reason > 0) {
+        PetscInt nreleased, more;
+        PetscCall(AssemblyReleaseUnstuck(a, Xtry, &nreleased));
+        if (!nreleased) break;
+        PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMax(1, maxit - its), PETSC_DEFAULT));
+        PetscCall(PetscInfo(a->snes, "step %zu: %" PetscInt_FMT " joints solved as linear springs left their linear state; solving on with the full law for them\n", a->steps.size() + 1, nreleased));
+        if (a->monitor_states) PetscCall(PetscPrintf(a->comm, "  step %zu: %" PetscInt_FMT " joints solved as linear springs would leave their linear state: solving on with the full law for them\n", a->steps.size() + 1, nreleased));
+        PetscCall(SNESSolve(a->snes, nullptr, Xtry));
+        PetscCall(SNESGetConvergedReason(a->snes, &reason));
+        PetscCall(SNESGetIterationNumber(a->snes, &more));
+        its += more;
+      }
+      PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
       if (reason > 0) {
+        a->last_increment = a->lambda_target - a->lambda;
         PetscCall(AssemblyCommit(a, Xtry));
         PetscCall(VecCopy(Xtry, a->X));
         a->lambda = a->lambda_target;

@@ -1,0 +1,69 @@
+# Linear where it can be (issue 4 item 5; docs/solver.md): with -joint_stuck_linear (the default)
+# joints that stay stuck are solved as linear springs, every one is checked with the full law before
+# a step is accepted, and the Jacobian and its factorisation are kept while no joint's tangent
+# changes. The reference is the same run with the option off (the full law everywhere, a new
+# Jacobian per Newton iteration): the results must not change.
+#   - Where the frozen joints do not change the Newton iterates (a joint solved as a spring follows
+#     the same affine law the full law gives it in stick), the results are the same to round-off:
+#     fig3c, double-lap, fig3b, the small plate grid (1e-10 of each quantity's scale).
+#   - On chain (2D frictional network) some steps take other Newton paths (a joint the full law
+#     would have sent into slide for one iterate stays a spring) and the converged points differ
+#     within the solver's tolerance: 1.4e-9 of the scale measured (1e-12 with -snes_atol 1e-13), so
+#     1e-8, as for other comparisons of different solution paths (hard_chain_one_step_same_solution).
+foreach(case fig3c chain)
+  if(case STREQUAL "fig3c")
+    set(_scene ${BOLTNET_SCENES}/fig3c.yaml)
+    set(_tol 1e-10)
+  else()
+    set(_scene ${BOLTNET_TEST_SCENES}/chain.yaml)
+    set(_tol 1e-8)
+  endif()
+  boltnet_run(${case}_full_law 1 ${_scene} -joint_stuck_linear false)
+  add_test(NAME stuck_linear_same_results_${case}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/${case}_full_law_np1/joints.csv ${BOLTNET_OUT}/${case}_np1/joints.csv ${_tol})
+  set_tests_properties(stuck_linear_same_results_${case} PROPERTIES FIXTURES_REQUIRED "${case}_np1;${case}_full_law_np1")
+endforeach()
+foreach(ranks 1 2)
+  boltnet_run(double_lap_full_law ${ranks} ${BOLTNET_SCENES}/double-lap.yaml -joint_stuck_linear false)
+  add_test(NAME stuck_linear_same_results_double_lap_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/double_lap_full_law_np${ranks}/joints.csv ${BOLTNET_OUT}/double_lap_np${ranks}/joints.csv 1e-10)
+  set_tests_properties(stuck_linear_same_results_double_lap_np${ranks} PROPERTIES FIXTURES_REQUIRED "double_lap_np${ranks};double_lap_full_law_np${ranks}")
+endforeach()
+boltnet_run(fig3b_full_law 1 ${BOLTNET_SCENES}/fig3b.yaml -load_steps 30 -joint_stuck_linear false)
+add_test(NAME stuck_linear_same_results_fig3b
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/fig3b_full_law_np1/joints.csv ${BOLTNET_OUT}/fig3b_np1/joints.csv 1e-10)
+set_tests_properties(stuck_linear_same_results_fig3b PROPERTIES FIXTURES_REQUIRED "fig3b_np1;fig3b_full_law_np1")
+foreach(ranks 1 3)
+  boltnet_run(plate_grid_small_full_law ${ranks} ${BOLTNET_OUT}/grid/small.yaml -joint_stuck_linear false)
+  set_tests_properties(run_plate_grid_small_full_law_np${ranks} PROPERTIES FIXTURES_REQUIRED grid_scene)
+  add_test(NAME stuck_linear_same_results_plate_grid_small_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_small_full_law_np${ranks}/joints.csv ${BOLTNET_OUT}/plate_grid_small_np${ranks}/joints.csv 1e-10)
+  set_tests_properties(stuck_linear_same_results_plate_grid_small_np${ranks} PROPERTIES FIXTURES_REQUIRED "plate_grid_small_np${ranks};plate_grid_small_full_law_np${ranks}")
+endforeach()
+
+# Joints solved as springs that the full law sends out of stick are released and the step solves on:
+# fig3c pulled to 6 kN in one step (stick, slide across the clearance, bearing) starts with the bolt
+# frozen; the result is checked against the closed form by hard_clearance_one_step_closed_form.
+add_test(NAME stuck_linear_released_clearance
+  COMMAND grep -q "\"released\": 1," ${BOLTNET_OUT}/hard_clearance_one_step_np1/summary.json)
+set_tests_properties(stuck_linear_released_clearance PROPERTIES FIXTURES_REQUIRED hard_clearance_one_step_np1)
+
+# Every joint a linear spring (fig3b's bolts as springs of their bearing stiffness), 10 steps: one
+# Jacobian and one factorisation for the whole run, the same results as a factorisation per step.
+set(_springs)
+foreach(t c02 c05 c08 c11)
+  list(APPEND _springs -joint_${t}_law spring -joint_${t}_kt 4e4)
+endforeach()
+boltnet_run(fig3b_springs 2 ${BOLTNET_SCENES}/fig3b.yaml -load_steps 10 ${_springs})
+boltnet_run(fig3b_springs_full_law 2 ${BOLTNET_SCENES}/fig3b.yaml -load_steps 10 ${_springs} -joint_stuck_linear false)
+add_test(NAME stuck_linear_one_factorisation
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); sys.exit(not (a['jacobians_assembled'] == 1 and a['jacobians_reused'] == 9 and b['jacobians_assembled'] == 10))"
+          ${BOLTNET_OUT}/fig3b_springs_np2/summary.json ${BOLTNET_OUT}/fig3b_springs_full_law_np2/summary.json)
+set_tests_properties(stuck_linear_one_factorisation PROPERTIES FIXTURES_REQUIRED "fig3b_springs_np2;fig3b_springs_full_law_np2")
+add_test(NAME stuck_linear_same_results_springs
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/fig3b_springs_full_law_np2/joints.csv ${BOLTNET_OUT}/fig3b_springs_np2/joints.csv 1e-12)
+set_tests_properties(stuck_linear_same_results_springs PROPERTIES FIXTURES_REQUIRED "fig3b_springs_np2;fig3b_springs_full_law_np2")
+
+# A margin outside [0, 1] is refused, naming the option.
+boltnet_expect(bad_stuck_margin 1 ${_bad} --match "-joint_stuck_margin 1.5 must lie in \\[0, 1\\]"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/bad -joint_stuck_margin 1.5)
