@@ -32,7 +32,7 @@ set_tests_properties(hard_fig3a_one_step_contact_law PROPERTIES FIXTURES_REQUIRE
 
 # kg = 0 (pure Coulomb) under prescribed displacement, +-0.2 mm: the force saturates at G exactly while
 # the bolt crosses its clearance, then bears (displacement-first closed form), in 60 and in 1 step per
-# segment. (Under force control the default fails: docs/robustness.md.)
+# segment. Under force control: hard_coulomb_force below.
 foreach(steps 1 60)
   boltnet_run(hard_coulomb_${steps} 1 ${BOLTNET_SCENES}/fig3c.yaml -scene_bcs ${BOLTNET_TEST_SCENES}/jenkins.bcs.csv
     -joint_bolt_kg 0 -load_table 0.2,-0.2,0 -load_steps ${steps})
@@ -45,6 +45,18 @@ foreach(steps 1 60)
   add_test(NAME hard_coulomb_${steps}_closed_form
     COMMAND ${_hard} disp1d ${BOLTNET_OUT}/hard_coulomb_${steps}_np1/joints.csv 1.5e5 0 4e4 0.05 3000 --states ${_states})
   set_tests_properties(hard_coulomb_${steps}_closed_form PROPERTIES FIXTURES_REQUIRED hard_coulomb_${steps}_np1)
+endforeach()
+
+# kg = 0 (pure Coulomb) under a prescribed force, cycled to +-5 kN: past G the bolt slides across its
+# whole clearance in one step and bears (no equilibrium in between); the slide tangent would be
+# singular without the Jacobian's floor along the slip (kSlideFloor, lib/joint/law.hpp). The
+# force-first closed form with kg = 0, at 1 and 12 steps per segment; only stick and bearing are
+# equilibria.
+foreach(steps 1 12)
+  boltnet_run(hard_coulomb_force_${steps} 1 ${BOLTNET_SCENES}/fig3c.yaml -joint_bolt_kg 0 -load_table 5000,-5000,0 -load_steps ${steps})
+  add_test(NAME hard_coulomb_force_${steps}_closed_form
+    COMMAND ${_hard} force1d ${BOLTNET_OUT}/hard_coulomb_force_${steps}_np1/joints.csv 1.5e5 0 4e4 0.05 3000 --states stick,contact --only)
+  set_tests_properties(hard_coulomb_force_${steps}_closed_form PROPERTIES FIXTURES_REQUIRED hard_coulomb_force_${steps}_np1)
 endforeach()
 
 # Symmetric joints that slide together: two identical joints in parallel on the symmetry axis carry

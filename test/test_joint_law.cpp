@@ -161,7 +161,9 @@ void append(std::vector<Point> &a, const std::vector<Point> &b) { a.insert(a.end
 
 // Central finite difference of evaluate() over all 6 jump components, committed history fixed.
 // *same_state reports whether every perturbed evaluation stayed in the state of the centre point.
-Mat6 fdTangent(const Params &p, const History &h, const Vec6 &du, double step, bool *same_state)
+// extra_k adds extra_k d(slip)/d(du) to the in-plane rows: the tangent of a law whose slip
+// resistance is stiffer by extra_k, which is what the Jacobian's floor on kg is (kSlideFloor).
+Mat6 fdTangent(const Params &p, const History &h, const Vec6 &du, double step, bool *same_state, double extra_k = 0)
 {
   const Response c = evaluate(p, h, du, Tangent::Consistent);
   Mat6           m{};
@@ -174,6 +176,7 @@ Mat6 fdTangent(const Params &p, const History &h, const Vec6 &du, double step, b
     const Response rd = evaluate(p, h, dn, Tangent::Consistent);
     if (ru.state != c.state || rd.state != c.state || ru.bearing != c.bearing || rd.bearing != c.bearing) *same_state = false;
     for (int i = 0; i < 6; ++i) m[6 * i + j] = (ru.force[i] - rd.force[i]) / (2 * step);
+    for (int i = 0; i < 2; ++i) m[6 * (1 + i) + j] += extra_k * (ru.trial.slip[i] - rd.trial.slip[i]) / (2 * step);
   }
   return m;
 }
@@ -184,7 +187,9 @@ void expectTangentMatchesFD(const Params &p, const History &h, const Vec6 &du, c
 {
   const double step = 1e-6; // mm: jumps are O(0.01..1) mm; truncation O(step^2), rounding O(eps F / step)
   bool         same = false;
-  const Mat6   fd   = fdTangent(p, h, du, step, &same);
+  // Below the floor (kg = 0: pure Coulomb) the tangent is that of kg = kSlideFloor ke.
+  const double extra = p.law == Law::Friction ? std::max(p.kg, kSlideFloor * p.kt) - p.kg : 0.0;
+  const Mat6   fd   = fdTangent(p, h, du, step, &same, extra);
   ASSERT_TRUE(same) << what << ": sample point too close to a state switch";
   const Mat6 an = evaluate(p, h, du, Tangent::Consistent).tangent;
   for (int i = 0; i < 6; ++i)
@@ -662,7 +667,7 @@ TEST(PaperTangent, SwitchedDefinitionInEveryState)
         const Response       rp = evaluate(p, s.h, s.du, Tangent::Paper);
         const Response       rc = evaluate(p, s.h, s.du, Tangent::Consistent);
         ASSERT_EQ(rp.state, target);
-        expectPaperTangent(p, rp.tangent, target == State::Stick ? p.kt : (target == State::Slide ? p.kg : p.kc), stateName(target));
+        expectPaperTangent(p, rp.tangent, target == State::Stick ? p.kt : (target == State::Slide ? std::max(p.kg, kSlideFloor * p.kt) : p.kc), stateName(target));
         EXPECT_EQ(rp.force, rc.force);
         EXPECT_EQ(rp.trial.slip[0], rc.trial.slip[0]);
         EXPECT_EQ(rp.trial.slip[1], rc.trial.slip[1]);
@@ -829,6 +834,25 @@ TEST(FrozenJoint, AffineStickSpringBeyondTheThreshold)
   g0.pretension = 0;
   EXPECT_TRUE(std::isinf(utilization(g0, History{}, jumpOf(0, 1e-9, 0))));
   EXPECT_EQ(utilization(g0, History{}, jumpOf(0, 0, 0)), 0.0);
+}
+
+// Pure Coulomb (kg = 0): the force stays on the plateau G (the law), while the tangent along the
+// slip is the floor kSlideFloor ke (Jacobian only), in both tangents; kg above the floor is kept.
+TEST(FrictionLaw, PureCoulombTangentFloor)
+{
+  Params p = dyadicFriction(); // G = 128, ke = 1024, j = 1/4
+  p.kg     = 0;
+  for (double du : {0.25, -0.3}) { // slip 1/8 and -0.175: sliding, inside the clearance
+    const Vec6     j = jumpOf(0, du, 0);
+    const Response c = evaluate(p, History{}, j, Tangent::Consistent), q = evaluate(p, History{}, j, Tangent::Paper);
+    EXPECT_EQ(c.state, State::Slide);
+    EXPECT_TRUE(Near(c.force[1], du > 0 ? 128.0 : -128.0, kClosed));
+    EXPECT_TRUE(Near(K(c.tangent, 1, 1), kSlideFloor * p.kt, kClosed));
+    EXPECT_TRUE(Near(K(q.tangent, 1, 1), kSlideFloor * p.kt, kClosed));
+  }
+  const Params   d = dyadicFriction(); // kg = 64 > kSlideFloor ke: its own tangent
+  const Response r = evaluate(d, History{}, jumpOf(0, 0.25, 0), Tangent::Consistent);
+  EXPECT_TRUE(Near(K(r.tangent, 1, 1), d.kg, kClosed));
 }
 
 // =============================================================================================

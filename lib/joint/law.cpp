@@ -109,8 +109,12 @@ void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent
   r.state         = !slide ? State::Stick : (b.active ? State::Contact : State::Slide);
   r.trial.state   = static_cast<int>(r.state);
 
+  // The Jacobian only: at least kSlideFloor ke along the slip, so that pure Coulomb (kg = 0) does not
+  // make the tangent singular while the bolt slides across its clearance under a prescribed force.
+  // The force keeps kg: converged solutions do not change, only the Newton steps toward them.
+  const double kg_t = std::max(p.kg, kSlideFloor * ke);
   if (tangent == Tangent::Paper) {
-    const double k = r.state == State::Stick ? ke : (r.state == State::Slide ? p.kg : p.kc);
+    const double k = r.state == State::Stick ? ke : (r.state == State::Slide ? kg_t : p.kc);
     setInPlane(r.tangent, {k, 0, 0, k});
     return;
   }
@@ -120,7 +124,7 @@ void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent
   }
   // Consistent tangent: dF/ddu_t = G ke/a P + Hw (I - G/a P), P = I - n n^T, Hw = dh/dw.
   const Mat2 P  = {1 - n[0] * n[0], -n[0] * n[1], -n[1] * n[0], 1 - n[1] * n[1]};
-  const Mat2 Hw = {p.kg + b.dforce[0], b.dforce[1], b.dforce[2], p.kg + b.dforce[3]};
+  const Mat2 Hw = {kg_t + b.dforce[0], b.dforce[1], b.dforce[2], kg_t + b.dforce[3]};
   Mat2       T{};
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) {

@@ -55,6 +55,10 @@ struct Response {
   bool    bearing = false; // friction: the slip has closed the clearance (bolt bears on the hole)
 };
 
+// Smallest sliding stiffness in the tangent of the frictional law, as a fraction of ke: the
+// Jacobian's floor for kg = 0 (pure Coulomb); the force uses kg itself (docs/joint-laws.md).
+constexpr double kSlideFloor = 1e-3;
+
 // Friction threshold G = mu nf max(0, Pc - phi F_n) for the given normal force.
 double frictionThreshold(const Params &p, double normal_force);
 
