@@ -919,7 +919,10 @@ PetscErrorCode AssemblyFreezeStuck(BoltnetAssembly a, PetscReal increment)
     a->util_ready  = PETSC_TRUE;
   }
   // Predicted utilization at the end of the step: the last step's change, scaled to this increment.
-  const PetscReal ratio = a->last_increment != 0 ? std::abs(increment / a->last_increment) : 0.0;
+  // Before the first converged step nothing is known of how the joints load: none is frozen (an
+  // elastic predictor there releases most of them again, at the cost of Newton iterations).
+  if (a->last_increment == 0) PetscFunctionReturn(0);
+  const PetscReal ratio = std::abs(increment / a->last_increment);
   PetscInt        loc[2] = {0, (PetscInt)a->jedges.size()}, glob[2];
   a->frozen.assign(a->jedges.size(), 0);
   for (size_t i = 0; i < a->jedges.size(); ++i) {

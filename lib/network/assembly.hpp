@@ -109,7 +109,7 @@ struct _p_BoltnetAssembly {
   // Linear where it can be (docs/solver.md): joints that stay stuck are solved as linear springs,
   // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
   PetscBool stuck_linear = PETSC_TRUE;
-  PetscReal stuck_margin = 0.8; // freeze a joint whose predicted utilization stays below this
+  PetscReal stuck_margin = 0.3; // freeze a joint whose predicted utilization stays below this (docs/solver.md: why 0.3)
   PetscBool        setfromoptions_called = PETSC_FALSE;
 
   // Network and solver.
