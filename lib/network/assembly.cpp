@@ -881,6 +881,19 @@ PetscErrorCode AssemblyStateCounts(BoltnetAssembly a, Vec X, PetscInt counts[5])
   PetscFunctionReturn(0);
 }
 
+// The utilization (law.hpp) of every local joint at the given jumps, with its committed history.
+static PetscErrorCode UtilizationAt(BoltnetAssembly a, const std::vector<Vec6> &jumps, std::vector<PetscReal> &util)
+{
+  PetscFunctionBeginUser;
+  util.resize(a->jedges.size());
+  for (size_t i = 0; i < a->jedges.size(); ++i) {
+    EdgeView ev;
+    PetscCall(GetEdge(a->dm, a->jedges[i], &ev));
+    util[i] = utilization(ev.joint->params, a->committed[i], jumps[i]);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X)
 {
   PetscFunctionBeginUser;
@@ -888,12 +901,7 @@ PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X)
   for (size_t i = 0; i < a->accepted.size(); ++i) a->committed[i] = a->accepted[i].trial;
   // Utilization with the new history, for the next step's choice of frozen joints.
   a->util_before = a->util_now;
-  a->util_now.resize(a->jedges.size());
-  for (size_t i = 0; i < a->jedges.size(); ++i) {
-    EdgeView ev;
-    PetscCall(GetEdge(a->dm, a->jedges[i], &ev));
-    a->util_now[i] = utilization(ev.joint->params, a->committed[i], a->accepted_jump[i]);
-  }
+  PetscCall(UtilizationAt(a, a->accepted_jump, a->util_now));
   if (!a->util_ready) a->util_before = a->util_now;
   a->util_ready = PETSC_TRUE;
   a->frozen.clear();
@@ -909,12 +917,7 @@ PetscErrorCode AssemblyFreezeStuck(BoltnetAssembly a, PetscReal increment)
     std::vector<Response> r;
     std::vector<Vec6>     du;
     PetscCall(AssemblyEvaluateJoints(a, a->X, r, &du, true));
-    a->util_now.resize(a->jedges.size());
-    for (size_t i = 0; i < a->jedges.size(); ++i) {
-      EdgeView ev;
-      PetscCall(GetEdge(a->dm, a->jedges[i], &ev));
-      a->util_now[i] = utilization(ev.joint->params, a->committed[i], du[i]);
-    }
+    PetscCall(UtilizationAt(a, du, a->util_now));
     a->util_before = a->util_now;
     a->util_ready  = PETSC_TRUE;
   }
