@@ -53,20 +53,25 @@ add_test(NAME stuck_linear_same_results_chain_margin08
 set_tests_properties(stuck_linear_same_results_chain_margin08 PROPERTIES FIXTURES_REQUIRED "chain_margin08_np1;chain_full_law_np1")
 
 # Every joint a linear spring (fig3b's bolts as springs of their bearing stiffness), 10 steps: one
-# Jacobian and one factorisation for the whole run, the same results as a factorisation per step.
+# Jacobian and one factorisation for the whole run, on 1, 2 and 3 ranks, the same results as a
+# factorisation per step (1e-12 of the scale).
 set(_springs)
 foreach(t c02 c05 c08 c11)
   list(APPEND _springs -joint_${t}_law spring -joint_${t}_kt 4e4)
 endforeach()
-boltnet_run(fig3b_springs 2 ${BOLTNET_SCENES}/fig3b.yaml -load_steps 10 ${_springs})
+foreach(ranks 1 2 3)
+  boltnet_run(fig3b_springs ${ranks} ${BOLTNET_SCENES}/fig3b.yaml -load_steps 10 ${_springs})
+endforeach()
 boltnet_run(fig3b_springs_full_law 2 ${BOLTNET_SCENES}/fig3b.yaml -load_steps 10 ${_springs} -joint_stuck_linear false)
-add_test(NAME stuck_linear_one_factorisation
-  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); sys.exit(not (a['jacobians_assembled'] == 1 and a['jacobians_reused'] == 9 and b['jacobians_assembled'] == 10))"
-          ${BOLTNET_OUT}/fig3b_springs_np2/summary.json ${BOLTNET_OUT}/fig3b_springs_full_law_np2/summary.json)
-set_tests_properties(stuck_linear_one_factorisation PROPERTIES FIXTURES_REQUIRED "fig3b_springs_np2;fig3b_springs_full_law_np2")
-add_test(NAME stuck_linear_same_results_springs
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/fig3b_springs_full_law_np2/joints.csv ${BOLTNET_OUT}/fig3b_springs_np2/joints.csv 1e-12)
-set_tests_properties(stuck_linear_same_results_springs PROPERTIES FIXTURES_REQUIRED "fig3b_springs_np2;fig3b_springs_full_law_np2")
+foreach(ranks 1 2 3)
+  add_test(NAME stuck_linear_one_factorisation_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); sys.exit(not (a['jacobians_assembled'] == 1 and a['jacobians_reused'] == 9 and b['jacobians_assembled'] == 10))"
+            ${BOLTNET_OUT}/fig3b_springs_np${ranks}/summary.json ${BOLTNET_OUT}/fig3b_springs_full_law_np2/summary.json)
+  set_tests_properties(stuck_linear_one_factorisation_np${ranks} PROPERTIES FIXTURES_REQUIRED "fig3b_springs_np${ranks};fig3b_springs_full_law_np2")
+  add_test(NAME stuck_linear_same_results_springs_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/fig3b_springs_full_law_np2/joints.csv ${BOLTNET_OUT}/fig3b_springs_np${ranks}/joints.csv 1e-12)
+  set_tests_properties(stuck_linear_same_results_springs_np${ranks} PROPERTIES FIXTURES_REQUIRED "fig3b_springs_np${ranks};fig3b_springs_full_law_np2")
+endforeach()
 
 # A margin outside [0, 1] is refused, naming the option.
 boltnet_expect(bad_stuck_margin 1 ${_bad} --match "-joint_stuck_margin 1.5 must lie in \\[0, 1\\]"

@@ -941,16 +941,20 @@ PetscErrorCode AssemblyFreezeStuck(BoltnetAssembly a, PetscReal increment)
 
 PetscErrorCode AssemblyReleaseUnstuck(BoltnetAssembly a, Vec X, PetscInt *nreleased)
 {
-  std::vector<Response> frozen, full;
+  std::vector<Response> full;
+  std::vector<Vec6>     du;
   PetscInt              n = 0;
   PetscFunctionBeginUser;
-  PetscCall(AssemblyEvaluateJoints(a, X, frozen));
-  PetscCall(AssemblyEvaluateJoints(a, X, full, nullptr, true));
-  for (size_t i = 0; i < a->frozen.size(); ++i)
-    if (a->frozen[i] && full[i].state != frozen[i].state) {
+  PetscCall(AssemblyEvaluateJoints(a, X, full, &du, true)); // one ghost update; the frozen states below are local
+  for (size_t i = 0; i < a->frozen.size(); ++i) {
+    if (!a->frozen[i]) continue;
+    EdgeView ev;
+    PetscCall(GetEdge(a->dm, a->jedges[i], &ev));
+    if (full[i].state != evaluate(ev.joint->params, a->committed[i], du[i], a->tangent, true).state) {
       a->frozen[i] = 0;
       ++n;
     }
+  }
   PetscCall(MPIU_Allreduce(&n, nreleased, 1, MPIU_INT, MPI_SUM, a->comm));
   a->released += *nreleased;
   PetscFunctionReturn(0);
