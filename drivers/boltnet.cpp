@@ -67,7 +67,9 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(OutputOpen(comm, dir, scene.name, fields, a, &out));
   out.identified = "{" + scene.identified + "}";
   a->on_step = [&out](BoltnetAssembly as, const StepInfo &info) { return OutputStep(as, info, &out); };
-  PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)\n", scene.name.c_str(), a->nparts, a->patches.size(), a->seams.size(), a->joints.size(), a->ndof_global, a->size, (double)a->dof_imbalance));
+  PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
+  if (a->opt.condense) PetscCall(PetscPrintf(comm, "; condensed onto %" PetscInt_FMT " interface dof", a->net.ndof_global));
+  PetscCall(PetscPrintf(comm, "\n"));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
   // program exits non-zero.

@@ -1,8 +1,9 @@
 // Unit tests of the plate generator, the cut into patches, the fastener footprint and the rigid
 // patch coupling (issue 3 items 2 and 3: the pieces that do not need the shell element).
-#include "coupling/rigid.hpp"
+#include "patch/rigid.hpp"
 #include "mesh/cut.hpp"
 #include "mesh/mesh.hpp"
+#include "mesh/search.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,10 +33,8 @@ TEST(Mesh, RectanglePlate)
   EXPECT_THROW(RectanglePlate(0, 0, 1, 1, 0, 1, 0), std::invalid_argument);
 }
 
-// Requirement (issue 3 item 2): a part is cut into patches of at most size x size elements, every
-// element in exactly one patch, patches contiguous blocks.
-// The properties every cut must have (issue 3 item 2): each node in one strip, every element within
-// two neighbouring strips, neighbouring strips joined by at least one element, each cluster whole.
+// The properties every cut must have (docs/architecture.md, "Patches and seams"): each node in one
+// patch, no empty patch, each cluster (a footprint and its elements) whole, each patch connected.
 void ExpectValidCut(const QuadMesh &m, const PartCut &c, const std::vector<std::vector<int>> &clusters)
 {
   ASSERT_EQ(c.patch.size(), m.x.size());
@@ -46,60 +45,82 @@ void ExpectValidCut(const QuadMesh &m, const PartCut &c, const std::vector<std::
     count[p]++;
   }
   for (int n : count) EXPECT_GT(n, 0);
-  std::vector<int> joined(c.npatches, 0);
+  for (const auto &cl : clusters)
+    for (int n : cl) EXPECT_EQ(c.patch[n], c.patch[cl[0]]);
+  // Connected: a flood fill through the elements' node pairs within one patch reaches all its nodes.
+  std::vector<std::set<int>> adj(m.x.size());
+  for (const auto &q : m.quads)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        if (c.patch[q[a]] == c.patch[q[b]] && a != b) adj[q[a]].insert(q[b]);
+  for (int p = 0; p < c.npatches; ++p) {
+    int start = -1;
+    for (size_t i = 0; i < m.x.size() && start < 0; ++i)
+      if (c.patch[i] == p) start = (int)i;
+    std::set<int>    seen = {start};
+    std::vector<int> todo = {start};
+    while (!todo.empty()) {
+      const int v = todo.back();
+      todo.pop_back();
+      for (int w : adj[v])
+        if (seen.insert(w).second) todo.push_back(w);
+    }
+    EXPECT_EQ((int)seen.size(), count[p]) << "patch " << p << " is not connected";
+  }
+}
+
+// Elements whose nodes lie in more than one patch (what the seams and the ports pay for).
+int CrossElements(const QuadMesh &m, const PartCut &c)
+{
+  int n = 0;
   for (const auto &q : m.quads) {
     std::set<int> s;
     for (int k = 0; k < 4; ++k) s.insert(c.patch[q[k]]);
-    ASSERT_LE(s.size(), 2u);
-    if (s.size() == 2) {
-      EXPECT_EQ(*s.rbegin() - *s.begin(), 1);
-      joined[*s.begin()] = 1;
-    }
+    n += s.size() > 1;
   }
-  for (int p = 0; p + 1 < c.npatches; ++p) EXPECT_TRUE(joined[p]) << "strip " << p << " is not joined to the next";
-  for (const auto &cl : clusters)
-    for (int n : cl) EXPECT_EQ(c.patch[n], c.patch[cl[0]]);
+  return n;
 }
 
-// Requirement (issue 3 item 2): a part larger than the patch size is cut into strips across its
-// longest side with about the same number of nodes each, keeping each fastener footprint whole.
-TEST(Mesh, CutIntoStrips)
+// A part larger than the patch size is cut by METIS into ceil(nodes / size) patches of about the
+// same size, keeping each fastener footprint whole.
+TEST(Mesh, CutPart)
 {
   const QuadMesh m = RectanglePlate(0, 0, 20, 200, 4, 40, 0); // 5 x 41 nodes, long in y
   const auto     fp = Footprint(m, {10, 102.5, 0}, {0, 0, 1}, 6.0);
   ASSERT_GT(fp.size(), 4u);
-  const PartCut c = CutIntoStrips(m, {fp}, 50);
+  const PartCut c = CutPart(m, {fp}, 50);
   EXPECT_EQ(c.npatches, 5); // ceil(205 / 50)
   ExpectValidCut(m, c, {fp});
   std::vector<int> count(c.npatches, 0);
   for (int p : c.patch) count[p]++;
-  for (int n : count) EXPECT_NEAR(n, 41.0, 12.0); // whole rows of 5 nodes, a footprint moves a few
-  for (size_t i = 0; i < m.x.size(); ++i) // strips follow y
-    for (size_t j = 0; j < m.x.size(); ++j)
-      if (m.x[i][1] < m.x[j][1] - 12.5) ASSERT_LE(c.patch[i], c.patch[j]);
+  for (int n : count) EXPECT_NEAR(n, 41.0, 12.0); // a footprint moves a few nodes
 }
 
-// No cut: a size of 0, or a part within the size.
-TEST(Mesh, CutIntoStripsKeepsSmallParts)
+// No cut: a size of 0, or a part within the size; one node more than the size makes two patches.
+TEST(Mesh, CutPartKeepsSmallParts)
 {
   const QuadMesh m = RectanglePlate(0, 0, 20, 20, 4, 4, 0);
-  EXPECT_EQ(CutIntoStrips(m, {}, 0).npatches, 1);
-  EXPECT_EQ(CutIntoStrips(m, {}, 25).npatches, 1);
-  EXPECT_EQ(CutIntoStrips(m, {}, 24).npatches, 2);
-}
-
-// Strips thinner than an element are refused and fewer are tried: a 40 x 10 plate with 2 x 8
-// elements has 3 columns of 9 nodes across its long side, so asking for 5-node patches ends with one
-// strip per column; a footprint covering the whole plate forbids any cut.
-TEST(Mesh, CutIntoStripsFallsBack)
-{
-  const QuadMesh m = RectanglePlate(0, 0, 40, 10, 2, 8, 0);
-  const PartCut  c = CutIntoStrips(m, {}, 5);
-  EXPECT_EQ(c.npatches, 3);
+  EXPECT_EQ(CutPart(m, {}, 0).npatches, 1);
+  EXPECT_EQ(CutPart(m, {}, 25).npatches, 1);
+  const PartCut c = CutPart(m, {}, 24);
+  EXPECT_EQ(c.npatches, 2);
   ExpectValidCut(m, c, {});
+  // A footprint covering the whole plate forbids any cut.
   std::vector<int> all(m.x.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = (int)i;
-  EXPECT_EQ(CutIntoStrips(m, {all}, 5).npatches, 1);
+  EXPECT_EQ(CutPart(m, {all}, 5).npatches, 1);
+}
+
+// A graph partitioner, not strips: a square plate cut in four crosses fewer elements than three
+// straight cuts across it (the strips' 3 x 40 = 120 elements), which is what keeps the interface
+// of condensed patches small.
+TEST(Mesh, CutPartBeatsStrips)
+{
+  const QuadMesh m = RectanglePlate(0, 0, 400, 400, 40, 40, 0); // 41 x 41 nodes
+  const PartCut  c = CutPart(m, {}, 421);                     // ceil(1681 / 421) = 4 patches
+  EXPECT_EQ(c.npatches, 4);
+  ExpectValidCut(m, c, {});
+  EXPECT_LT(CrossElements(m, c), 120);
 }
 
 // Requirement (issue 3 item 3): the footprint is the set of nodes within the radius, measured in the
@@ -113,6 +134,45 @@ TEST(Mesh, Footprint)
   const std::set<std::array<double, 2>> want = {{4, 4}, {3, 4}, {5, 4}, {4, 3}, {4, 5}};
   EXPECT_EQ(got, want);
   EXPECT_TRUE(Footprint(m, {4.5, 4.5, 0}, {0, 0, 1}, 0.5).empty());
+}
+
+// The spatial index finds, on a flat part, exactly what the brute-force search of every node finds
+// (footprints, containing elements, nearest nodes), for fasteners all over the plate and off it.
+TEST(Mesh, FootprintFinderMatchesBruteForce)
+{
+  const QuadMesh  m = RectanglePlate(-3, 7, 60, 45, 23, 17, 2.0);
+  FootprintFinder finder(m, 16.0);
+  for (int i = 0; i < 200; ++i) {
+    const std::array<double, 3> p    = {-10 + 0.37 * i, 5 + std::fmod(7.3 * i, 50.0), 1.0 + 0.01 * (i % 7)};
+    const std::array<double, 3> axis = {0, 0, i % 2 ? 1.0 : -2.0};
+    const double                r    = 1.0 + (i % 5);
+    EXPECT_EQ(finder.Footprint(p, axis, r), Footprint(m, p, axis, r)) << "point " << i;
+    EXPECT_EQ(finder.CouplingFootprint(p, axis, r), CouplingFootprint(m, p, axis, r)) << "point " << i;
+    EXPECT_EQ(finder.ContainingElement(p, axis), ContainingElement(m, p, axis)) << "point " << i;
+    EXPECT_EQ(finder.NearestNode(p, axis), NearestNode(m, p, axis)) << "point " << i;
+  }
+}
+
+// On a closed part (a barrel, radius 100) a radial fastener's axis passes through the far side too:
+// the brute-force search takes both sides, the finder only the sheet nearest the fastener.
+TEST(Mesh, FootprintFinderNearestSheet)
+{
+  QuadMesh     m;
+  const int    nc = 64, nl = 10;
+  const double R = 100, pi = std::acos(-1.0);
+  for (int j = 0; j <= nl; ++j)
+    for (int i = 0; i < nc; ++i) m.x.push_back({R * std::cos(2 * pi * i / nc), R * std::sin(2 * pi * i / nc), 10.0 * j});
+  for (int j = 0; j < nl; ++j)
+    for (int i = 0; i < nc; ++i) m.quads.push_back({j * nc + i, j * nc + (i + 1) % nc, (j + 1) * nc + (i + 1) % nc, (j + 1) * nc + i});
+  const std::array<double, 3> p = {R + 1.0, 0, 50}, axis = {1, 0, 0};
+  const auto                  brute = Footprint(m, p, axis, 12.0);
+  const auto                  near  = FootprintFinder(m, 16.0).Footprint(p, axis, 12.0);
+  ASSERT_FALSE(near.empty());
+  for (int n : near) EXPECT_GT(m.x[n][0], 0.9 * R);
+  bool far = false;
+  for (int n : brute) far = far || m.x[n][0] < -0.9 * R;
+  EXPECT_TRUE(far) << "the brute-force search should see the far side";
+  EXPECT_LT(near.size(), brute.size());
 }
 
 // Requirement (issue 3 item 3): the penalty rigid link does no work on any rigid motion of the pair

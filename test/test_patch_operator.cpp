@@ -1,6 +1,6 @@
 // The patch operator of a shell patch with a joint node (issue 3 item 3, docs/coupling.md): exact
 // elimination of the footprint against closed forms, and penalty converging to it.
-#include "network/patch.hpp"
+#include "patch/patch.hpp"
 
 #include <gtest/gtest.h>
 

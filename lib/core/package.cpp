@@ -1,12 +1,19 @@
 // Package initialisation: registers boltnet's PETSc types once per PetscInitialize.
 #include "boltnet.h"
 #include "core/compat.h"
+#include "core/log.hpp"
 #include "joint/law.hpp"
 
 extern "C" PetscErrorCode SNESLineSearchCreate_Boltnet(SNESLineSearch);
 
 namespace {
-PetscBool packageInitialized = PETSC_FALSE; // reset by the finalizer registered with PETSc
+PetscBool          packageInitialized = PETSC_FALSE; // reset by the finalizer registered with PETSc
+boltnet::LogEvents events;                            // registered with the package, like PETSc's own
+} // namespace
+
+const boltnet::LogEvents &boltnet::Events()
+{
+  return events;
 }
 
 /*@C
@@ -32,6 +39,15 @@ PetscErrorCode BoltnetInitializePackage(void)
   packageInitialized = PETSC_TRUE;
   PetscCall(SNESInitializePackage());
   PetscCall(SNESLineSearchRegister(SNESLINESEARCHBOLTNET, SNESLineSearchCreate_Boltnet));
+  PetscCall(PetscClassIdRegister("boltnet", &events.classid));
+  PetscCall(PetscLogEventRegister("BoltnetLayout", events.classid, &events.layout));
+  PetscCall(PetscLogEventRegister("BoltnetNetwork", events.classid, &events.network));
+  PetscCall(PetscLogEventRegister("BoltnetCondense", events.classid, &events.condense));
+  PetscCall(PetscLogEventRegister("BoltnetResidual", events.classid, &events.residual));
+  PetscCall(PetscLogEventRegister("BoltnetJacobian", events.classid, &events.jacobian));
+  PetscCall(PetscLogEventRegister("BoltnetJoints", events.classid, &events.joints));
+  PetscCall(PetscLogEventRegister("BoltnetRecover", events.classid, &events.recover));
+  PetscCall(PetscLogEventRegister("BoltnetOutput", events.classid, &events.output));
   PetscCall(PetscRegisterFinalize(BoltnetFinalizePackage));
   PetscFunctionReturn(0);
 }

@@ -43,11 +43,11 @@ PetscErrorCode SolveCoupon(const CouponSpec &s, const CouponResult &geo, double 
   PetscCall(BoltnetAssemblyAddBCOnSet(a, 1, "xmin", -1, BOLTNET_BC_FIXED, 0));
   for (PetscInt dof = 1; dof < 6; ++dof) PetscCall(BoltnetAssemblyAddBCOnSet(a, 2, "xmax", dof, BOLTNET_BC_FIXED, 0));
   PetscCall(BoltnetAssemblyAddBCOnSet(a, 2, "xmax", 0, BOLTNET_BC_DISPLACEMENT, delta));
-  a->coupling_type    = s.coupling;
-  a->coupling_radius  = s.radius;
-  a->coupling_penalty = s.penalty;
-  a->patch_max_nodes  = 0; // one patch per sheet, on this rank
-  a->balance          = PETSC_FALSE;
+  a->opt.coupling_type    = s.coupling;
+  a->opt.coupling_radius  = s.radius;
+  a->opt.coupling_penalty = s.penalty;
+  a->opt.patch_max_nodes  = 0; // one patch per sheet, on this rank
+  a->opt.balance          = PETSC_FALSE;
   PetscCall(BoltnetAssemblySetFromOptions(a));
   PetscCall(BoltnetAssemblySetUp(a));
   const PetscReal one = 1.0;

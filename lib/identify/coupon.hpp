@@ -13,7 +13,7 @@
 #pragma once
 
 #include "joint/law.hpp"
-#include "network/patch.hpp"
+#include "patch/patch.hpp"
 
 #include <petscsys.h>
 

@@ -45,7 +45,7 @@ PetscErrorCode FastenerFromOptions(MPI_Comm comm, const char prefix[], const cha
 
 PetscErrorCode ShellCorrectionFromOptions(MPI_Comm comm, const char prefix[], const char title[], PetscBool standalone, ShellCorrectionOptions *o)
 {
-  const char *couplings[] = {"penalty", "exact", "node"}; // as -coupling_type (network/patch.hpp)
+  const char *couplings[] = {"penalty", "exact", "node"}; // as -coupling_type (patch/patch.hpp)
   PetscFunctionBeginUser;
   PetscOptionsBegin(comm, prefix, title, "boltnet");
   PetscCall(PetscOptionsBool("-shell_correction", "Subtract from the formula's compliance what the shell mesh and coupling already deliver, measured on a flat coupon (docs/identify.md)", "", o->on, &o->on, nullptr));

@@ -32,7 +32,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
-  out->fields   = (fields && !a->shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
+  out->fields   = (fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
   if (rank == 0) {
@@ -106,14 +106,14 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   std::ostringstream j;
   j.precision(17);
   j << "{\n  \"scene\": " << JsonString(out->scene) << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
-    << ",\n  \"parts\": " << a->nparts << ",\n  \"patches\": " << a->patches.size() << ",\n  \"seams\": " << a->seams.size() << ",\n  \"joints\": " << a->joints.size() << ",\n  \"dof\": " << a->ndof_global << ",\n  \"dof_imbalance\": " << a->dof_imbalance << ",\n  \"joint_tangent\": " << JsonString(a->tangent == Tangent::Paper ? "paper" : "consistent")
+    << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.joints.size() << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->opt.condense ? "true" : "false") << ",\n  \"dof_imbalance\": " << a->net.dof_imbalance << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
     << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))
     << ",\n  \"steps\": " << a->steps.size() << ",\n  \"final_load\": " << a->lambda << ",\n  \"cutbacks\": " << a->total_cutbacks << ",\n  \"newton_iterations\": [";
   for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].newton_its;
   j << "],\n  \"cutbacks_per_step\": [";
   for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].cutbacks;
-  j << "],\n  \"stuck_linear\": " << (a->stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << (a->joint_steps ? (double)a->frozen_joint_steps / (double)a->joint_steps : 0.0)
-    << ",\n  \"released\": " << a->released << ",\n  \"jacobians_assembled\": " << a->jac_assembled << ",\n  \"jacobians_reused\": " << a->jac_reused;
+  j << "],\n  \"stuck_linear\": " << (a->opt.stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << (a->joints.joint_steps ? (double)a->joints.frozen_joint_steps / (double)a->joints.joint_steps : 0.0)
+    << ",\n  \"released\": " << a->joints.released << ",\n  \"jacobians_assembled\": " << a->joints.jac_assembled << ",\n  \"jacobians_reused\": " << a->joints.jac_reused;
   j << ",\n  \"most_loaded_joint\": ";
   if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << out->most_load << ", \"in_plane_force\": " << out->most_force << "}";
   else j << "null";

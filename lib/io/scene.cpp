@@ -156,17 +156,16 @@ PetscErrorCode ShellCorrection(MPI_Comm comm, BoltnetAssembly a, const std::stri
   identify::CouponResult res;
   PetscFunctionBeginUser;
   // The coupling the scene will use (read again by BoltnetAssemblySetFromOptions later).
-  PetscInt  ct = static_cast<PetscInt>(a->coupling_type);
-  PetscReal radius = a->coupling_radius, penalty = a->coupling_penalty;
+  PetscInt  ct = static_cast<PetscInt>(a->opt.coupling_type);
+  PetscReal radius = a->opt.coupling_radius, penalty = a->opt.coupling_penalty;
   PetscCall(PetscOptionsGetEList(nullptr, a->prefix.c_str(), "-coupling_type", kCouplingTypeNames, 3, &ct, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, a->prefix.c_str(), "-coupling_radius", &radius, nullptr));
   PetscCall(PetscOptionsGetReal(nullptr, a->prefix.c_str(), "-coupling_penalty", &penalty, nullptr));
   PetscCheck(o.g.n == 1, comm, PETSC_ERR_USER_INPUT, "Joint type '%s': the shell correction's coupon is a single lap of two sheets; it needs -joint_%s_fastener_shear_planes 1 (got %d)", type.c_str(), type.c_str(), o.g.n);
   const PetscInt ids[2] = {fj.patch_a, fj.patch_b};
   for (int i = 0; i < 2; ++i) {
-    const ShellPatch *sp = nullptr;
-    for (const auto &kv : a->shells)
-      if (kv.second.id == ids[i]) sp = &kv.second;
+    const PetscInt   pos = a->model.Find(ids[i]);
+    const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;
     PetscCheck(sp, comm, PETSC_ERR_USER_INPUT, "Joint type '%s': the shell correction (-joint_%s_fastener_shell_correction) needs shell patches, but joint %" PetscInt_FMT " attaches to patch %" PetscInt_FMT ", which is not one", type.c_str(), type.c_str(), fj.id, ids[i]);
     // The coupon lies in its x-y plane, pulled along x = the joint's t1 (y = n x t1): a laminate's
     // reference direction goes with it.

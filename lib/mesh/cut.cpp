@@ -1,95 +1,81 @@
 #include "mesh/cut.hpp"
 
+#include <metis.h>
+
 #include <algorithm>
+#include <map>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace boltnet {
 namespace {
 
-// Union-find root with path halving.
 int Root(std::vector<int> &parent, int i)
 {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
 }
 
-// A strip assignment is usable if every element spans at most two neighbouring strips and each
-// strip but the last is joined to the next by at least one element (else a strip would be an island
-// of the network, reached by no edge).
-bool Usable(const QuadMesh &m, const std::vector<int> &patch, int npatches)
-{
-  std::vector<char> joined(npatches, 0);
-  for (const auto &q : m.quads) {
-    int lo = patch[q[0]], hi = lo;
-    for (int k = 1; k < 4; ++k) {
-      lo = std::min(lo, patch[q[k]]);
-      hi = std::max(hi, patch[q[k]]);
-    }
-    if (hi - lo > 1) return false;
-    if (hi > lo) joined[lo] = 1;
-  }
-  for (int s = 0; s + 1 < npatches; ++s)
-    if (!joined[s]) return false;
-  return true;
-}
-
 } // namespace
 
-PartCut CutIntoStrips(const QuadMesh &m, const std::vector<std::vector<int>> &clusters, long max_nodes)
+PartCut CutPart(const QuadMesh &m, const std::vector<std::vector<int>> &clusters, long max_nodes)
 {
-  const int n = (int)m.x.size();
-  PartCut   cut;
+  PartCut    cut;
+  const long n = (long)m.x.size();
   cut.patch.assign(n, 0);
   if (max_nodes <= 0 || n <= max_nodes) return cut;
-
-  // The direction of the longest extent of the bounding box.
-  int    axis = 0;
-  double best = -1;
-  for (int k = 0; k < 3; ++k) {
-    double lo = m.x[0][k], hi = lo;
-    for (const auto &x : m.x) {
-      lo = std::min(lo, x[k]);
-      hi = std::max(hi, x[k]);
-    }
-    if (hi - lo > best) best = hi - lo, axis = k;
-  }
-  // Units: single nodes, or clusters (footprints) merged where they share nodes.
+  // Contract the clusters: graph vertex of each node.
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
   for (const auto &c : clusters)
-    for (size_t i = 1; i < c.size(); ++i) parent[Root(parent, c[i])] = Root(parent, c[0]);
-  std::vector<double> coord(n, 0.0);
-  std::vector<int>    size(n, 0);
-  for (int i = 0; i < n; ++i) {
-    const int r = Root(parent, i);
-    coord[r] += m.x[i][axis];
-    size[r]++;
+    for (size_t k = 1; k < c.size(); ++k) parent[Root(parent, c[k])] = Root(parent, c[0]);
+  std::vector<int> vertex(n, -1);
+  idx_t            nv = 0;
+  for (long i = 0; i < n; ++i)
+    if (Root(parent, (int)i) == i) vertex[i] = nv++;
+  for (long i = 0; i < n; ++i) vertex[i] = vertex[Root(parent, (int)i)];
+  const long want = (n + max_nodes - 1) / max_nodes;
+  if (nv < 2 || want < 2) return cut;
+  // Adjacency of graph vertices through elements, weighted by the number of node pairs.
+  std::vector<std::map<idx_t, idx_t>> adj(nv);
+  for (const auto &q : m.quads)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        const idx_t u = vertex[q[a]], v = vertex[q[b]];
+        if (u != v) adj[u][v]++;
+      }
+  std::vector<idx_t> xadj(1, 0), adjncy, adjwgt, vwgt(nv, 0), part(nv, 0);
+  for (long i = 0; i < n; ++i) vwgt[vertex[i]]++;
+  for (idx_t u = 0; u < nv; ++u) {
+    for (const auto &kv : adj[u]) {
+      adjncy.push_back(kv.first);
+      adjwgt.push_back(kv.second);
+    }
+    xadj.push_back((idx_t)adjncy.size());
   }
-  std::vector<int> units;
-  for (int i = 0; i < n; ++i)
-    if (Root(parent, i) == i) {
-      coord[i] /= size[i];
-      units.push_back(i);
-    }
-  std::stable_sort(units.begin(), units.end(), [&](int l, int r) { return coord[l] < coord[r]; });
-
-  for (int k = (int)((n + max_nodes - 1) / max_nodes); k > 1; --k) {
-    // Strip s takes units while the nodes before them are fewer than (s + 1) n / k.
-    std::vector<int> strip(n, 0);
-    long             before = 0;
-    for (int u : units) {
-      strip[u] = (int)std::min<long>(k - 1, before * k / n);
-      before += size[u];
-    }
-    std::vector<int> patch(n);
-    for (int i = 0; i < n; ++i) patch[i] = strip[Root(parent, i)];
-    if (Usable(m, patch, k)) {
-      cut.npatches = k;
-      cut.patch    = std::move(patch);
-      return cut;
-    }
+  idx_t ncon = 1, nparts = (idx_t)std::min<long>(want, nv), objval = 0;
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_SEED]      = 1; // the same cut on every run and every rank
+  options[METIS_OPTION_NUMBERING] = 0;
+  options[METIS_OPTION_CONTIG]    = 1; // patches without islands where the part has none
+  int status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adjncy.data(), vwgt.data(), nullptr, adjwgt.data(), &nparts, nullptr, nullptr, options, &objval, part.data());
+  if (status != METIS_OK) { // a part made of several pieces cannot be cut into contiguous patches
+    options[METIS_OPTION_CONTIG] = 0;
+    status = METIS_PartGraphKway(&nv, &ncon, xadj.data(), adjncy.data(), vwgt.data(), nullptr, adjwgt.data(), &nparts, nullptr, nullptr, options, &objval, part.data());
   }
-  return cut; // no usable cut: the part stays whole
+  if (status != METIS_OK) throw std::runtime_error("METIS could not cut a part of " + std::to_string(n) + " nodes into " + std::to_string(nparts) + " patches (status " + std::to_string(status) + ")");
+  // Number the patches that received nodes 0..npatches-1, in order of their lowest node.
+  std::vector<int> renum(nparts, -1);
+  int              np = 0;
+  for (long i = 0; i < n; ++i) {
+    int &r = renum[part[vertex[i]]];
+    if (r < 0) r = np++;
+    cut.patch[i] = r;
+  }
+  cut.npatches = np;
+  return cut;
 }
 
 } // namespace boltnet

@@ -1,5 +1,5 @@
 // Quadrilateral shell meshes: a built-in generator of rectangular plates, node sets for boundary
-// conditions, fastener footprints (the cut of a part into patches: mesh/cut.hpp). Pure C++.
+// conditions, fastener footprints (the cut of a part into patches: mesh/cut.hpp; the spatial index: mesh/search.hpp). Pure C++.
 #pragma once
 
 #include <array>

@@ -1,56 +1,96 @@
-// The assembly: a DMNetwork whose vertices are patches and whose edges are joints.
-// Internal C++ view of the opaque BoltnetAssembly of boltnet.h.
+// The assembly: the opaque BoltnetAssembly of boltnet.h, in the order the data flows.
+//
+//   model    what the user described: parts, fasteners, boundary conditions (model/model.hpp)
+//   layout   the parts cut into patches, joints attached, the nodes each vertex carries
+//            (patch/layout.hpp)
+//   net      the DMNetwork of patches (vertices), joints and seams (edges), distributed
+//   patches  the operators of the patches and seams this rank owns: kept whole, or condensed onto
+//            their ports (patch/condense.hpp)
+//   joints   the joints this rank owns and their history (joint/jointset.hpp)
+//   bc       the boundary rows of the network's vectors (network/boundary.cpp)
+// and the solver state (SNES, Jacobian, solution, load factor, the record of the steps).
 #pragma once
 
 #include "boltnet.h"
 #include "core/compat.h"
-#include "joint/law.hpp"
-#include "network/patch.hpp"
-
-#include <map>
+#include "joint/jointset.hpp"
+#include "model/model.hpp"
+#include "patch/condense.hpp"
+#include "patch/layout.hpp"
+#include "shell/shell.hpp"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace boltnet {
 
-// Patch kinds. A rigid patch is one 6-dof node; shell patches (issue 3) add nodes and a stiffness.
-enum class PatchKind : PetscInt { Rigid = 0, Shell = 1 };
-
-// Vertex component: plain data, copied as raw bytes by DMNetworkDistribute.
-struct PatchComp {
-  PetscInt  id;     // user id
-  PetscInt  index;  // position in the description
-  PetscInt  kind;   // PatchKind
-  PetscInt  nnodes; // nodes carried by the vertex (6 dof each)
-  PetscReal x[3];   // reference position of node 0
+// Options of the assembly (BoltnetAssemblySetFromOptions lists each with its help).
+struct AssemblyOptions {
+  Tangent      tangent        = Tangent::Consistent; // docs/solver.md: why
+  PetscInt     max_cuts       = 8;
+  PetscBool    monitor_states = PETSC_FALSE;
+  // Linear where it can be (docs/solver.md): joints that stay stuck are solved as linear springs,
+  // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
+  PetscBool    stuck_linear = PETSC_TRUE;
+  PetscReal    stuck_margin = 0.3; // freeze a joint whose predicted utilization stays below this
+  // Patches: condensed onto their ports, or kept whole (docs/solver.md, "Condensed patches").
+  PetscBool    condense = PETSC_TRUE;
+  // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,
+  // -1: automatic), and whether boltnet partitions the network by dof (METIS) or PETSc does.
+  PetscInt     patch_max_nodes = -1;
+  PetscBool    balance         = PETSC_TRUE;
+  // Patch coupling (docs/coupling.md): type, footprint radius and reach (mm), penalty factor (link
+  // stiffness = factor * A11).
+  CouplingType coupling_type    = CouplingType::Exact; // docs/coupling.md: why
+  PetscReal    coupling_radius  = 4.0;
+  PetscReal    coupling_reach   = 0;
+  PetscReal    coupling_penalty = 1e3;
+  PetscBool    setfromoptions_called = PETSC_FALSE;
 };
 
-// Edge component: plain data. R holds the local frame rows (n, t1, t2).
-struct JointComp {
-  PetscInt  id;     // user id
-  PetscInt  index;  // position in the description (0..njoints-1)
-  PetscInt  patch_a, patch_b; // user ids of the two patches
-  PetscReal x[3];             // position of the fastener (where shell patches attach it)
-  PetscInt  node_a; // attachment node inside patch a
-  PetscInt  node_b; // attachment node inside patch b
-  PetscReal R[9];
-  Params    params;
+// The DMNetwork and the local views of it.
+struct Network {
+  DM                    dm     = nullptr;
+  PetscInt              vStart = 0, vEnd = 0, eStart = 0, eEnd = 0;
+  PetscInt              keyPatch = -1, keyJoint = -1, keySeam = -1; // component keys
+  std::vector<PetscInt> sedges;          // local edge points that are seams
+  PetscInt              ndof_global = 0; // the network's dof (the interface's when condensed)
+  PetscInt              ndof_model  = 0; // every dof of the model (patches kept whole)
+  PetscReal             dof_imbalance = 1; // max over ranks of the owned model dof / their mean
 };
 
-// Edge component of a seam: plain data; the seam's elements are in the assembly's `seams`.
-struct SeamComp {
-  PetscInt index; // position in the assembly's seams
-  PetscInt part;  // user id of the part
+// A patch this rank owns, with its operator.
+struct OwnedPatch {
+  PetscInt       v     = -1; // vertex point
+  PetscInt       index = -1; // position in the layout's patches
+  PetscInt       goff = 0, loff = 0; // offsets of its dof in the global and the local vector
+  bool           shell = false;
+  PatchOperator  op;   // kept whole: the operator over every node
+  CondensedPatch cond; // condensed: the operator on the ports
 };
 
-struct BCDesc {
-  PetscInt      patch; // user id
-  std::string   set;   // node set of a shell patch ("" : every node of the patch)
-  PetscInt      dof;   // 0..5, or -1 for all six
-  BoltnetBCKind kind;
-  PetscReal     value; // per unit load factor (fixed: ignored); a force is the set's total
+struct PatchSet {
+  std::vector<OwnedPatch>                                        owned;
+  std::map<PetscInt, std::vector<shell::ElementMatrix>>          seam_ops; // owned seams by edge point
+  PetscLogDouble                                                 condensed_bytes = 0; // on this rank
+};
+
+// Boundary conditions on owned rows (global indices), per unit load factor.
+struct Boundary {
+  std::vector<PetscInt>  dirichlet_rows;
+  std::vector<PetscReal> dirichlet_values;
+  std::vector<PetscInt>  force_rows;
+  std::vector<PetscReal> force_values;
+  PetscReal              fext_norm = 0; // || every applied force || per unit load factor (the model's)
+};
+
+struct StepInfo {
+  PetscInt  step;       // converged step number (1-based)
+  PetscReal load;       // load factor
+  PetscInt  newton_its; // Newton iterations of the accepted solve
+  PetscInt  cutbacks;   // cut-backs needed before this step converged
 };
 
 // One row of results for one joint at one converged step (gathered to rank 0 for output).
@@ -63,104 +103,35 @@ struct JointRecord {
   PetscReal slip[2];
 };
 
-struct StepInfo {
-  PetscInt  step;        // converged step number (1-based)
-  PetscReal load;        // load factor
-  PetscInt  newton_its;  // Newton iterations of the accepted solve
-  PetscInt  cutbacks;    // cut-backs needed before this step converged
-};
-
 } // namespace boltnet
 
 struct _p_BoltnetAssembly {
-  MPI_Comm    comm   = MPI_COMM_NULL;
-  PetscMPIInt rank   = 0;
-  PetscMPIInt size   = 1;
+  MPI_Comm    comm = MPI_COMM_NULL;
+  PetscMPIInt rank = 0;
+  PetscMPIInt size = 1;
   std::string prefix;
 
-  // Description (replicated on every rank, used by rank 0 to build the network).
-  std::vector<boltnet::PatchComp> patches;
-  std::vector<boltnet::JointComp> joints;
-  std::vector<boltnet::BCDesc>    bcs;
-  std::map<PetscInt, boltnet::ShellPatch> shells; // shell patches by position in `patches`
-  std::vector<boltnet::Seam>              seams;  // seams between patches cut from one part
-  std::map<PetscInt, boltnet::QuadMesh>   cut_parts; // the meshes of the parts that were cut, by user id
-  PetscInt nparts = 0; // parts described by the user (before large ones are cut into patches)
+  boltnet::AssemblyOptions opt;
+  boltnet::Model           model;
+  boltnet::Layout          layout;
+  boltnet::Network         net;
+  boltnet::PatchSet        patches;
+  boltnet::JointSet        joints;
+  boltnet::Boundary        bc;
 
-  // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,
-  // -1: automatic), and whether boltnet partitions the network by dof (METIS) or PETSc does.
-  PetscInt  patch_max_nodes = -1;
-  PetscBool balance         = PETSC_TRUE;
-
-  // Patch coupling (docs/coupling.md): type, footprint radius (mm) and penalty factor (link
-  // stiffness = factor * A11).
-  boltnet::CouplingType coupling_type = boltnet::CouplingType::Exact; // docs/coupling.md: why
-  PetscReal coupling_radius  = 4.0;
-  PetscReal coupling_penalty = 1e3;
-  // Stiffness of the owned shell patches, by vertex point, built after distribution.
-  std::map<PetscInt, boltnet::PatchOperator> ops;
-  // Element stiffness of the owned seams, by edge point.
-  std::map<PetscInt, std::vector<boltnet::shell::ElementMatrix>> seam_ops;
-
-  // Options.
-  boltnet::Tangent tangent        = boltnet::Tangent::Consistent; // docs/solver.md: why
-  PetscInt         max_cuts       = 8;
-  PetscBool        monitor_states = PETSC_FALSE;
-  // Linear where it can be (docs/solver.md): joints that stay stuck are solved as linear springs,
-  // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
-  PetscBool stuck_linear = PETSC_TRUE;
-  PetscReal stuck_margin = 0.3; // freeze a joint whose predicted utilization stays below this (docs/solver.md: why 0.3)
-  PetscBool        setfromoptions_called = PETSC_FALSE;
-
-  // Network and solver.
-  DM       dm   = nullptr;
-  SNES     snes = nullptr;
-  Mat      J    = nullptr;
-  Vec      X    = nullptr; // converged solution
-  PetscInt vStart = 0, vEnd = 0, eStart = 0, eEnd = 0;
-  PetscInt keyPatch = -1, keyJoint = -1, keySeam = -1; // component keys
-  std::vector<PetscInt> jedges; // local edge points that are joints; joint arrays below follow it
-  std::vector<PetscInt> sedges; // local edge points that are seams
-  PetscInt ndof_global = 0;
-  PetscReal dof_imbalance = 1; // max over ranks of the owned dof / their mean
-
-  // History per local joint (jedges[i] has index i), owned by the edge's rank.
-  std::vector<boltnet::History> committed;
-  // The joints at the last converged step, evaluated against the history before it (so that the
-  // state says what the joint did during the step: a joint that slid reads 'slide', not 'stick').
-  std::vector<boltnet::Response> accepted;
-  std::vector<boltnet::Vec6>     accepted_jump;
-  // Joint states at each Newton iterate of the current solve (local joints), for the monitor and
-  // for naming the joints that kept changing state when a step fails.
-  std::vector<std::vector<PetscInt>> state_trace;
-  // Joints solved as linear springs in the current attempt (1: frozen; empty: none), their
-  // utilization (law.hpp) at the last two converged steps, and the last step's load increment.
-  std::vector<char>      frozen;
-  std::vector<PetscReal> util_now, util_before;
-  PetscReal              last_increment = 0;
-  PetscBool              util_ready     = PETSC_FALSE; // util_now holds the last converged step's
-  // The joint tangents assembled into J (valid only while jac_valid) and the bookkeeping.
-  std::vector<boltnet::Mat6> jac_tangent;
-  PetscBool                  jac_valid = PETSC_FALSE;
-  PetscInt jac_assembled = 0, jac_reused = 0;     // Jacobian evaluations assembled / kept
-  PetscInt frozen_joint_steps = 0, joint_steps = 0; // summed over attempts: joints frozen / all
-  PetscInt released = 0;                          // frozen joints the full law sent out of stick
-  PetscBool                          user_atol = PETSC_FALSE; // -snes_atol given: keep it
-  PetscReal                          jnorm     = 0;           // ||J||_inf of the last Jacobian
-
-  // Boundary conditions on owned rows (global indices).
-  std::vector<PetscInt>  dirichlet_rows;
-  std::vector<PetscReal> dirichlet_values; // per unit load factor
-  std::vector<PetscInt>  force_rows;
-  std::vector<PetscReal> force_values;
-
+  // Solver state.
+  SNES      snes      = nullptr;
+  Mat       J         = nullptr;
+  Vec       X         = nullptr; // converged solution
+  PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
+  PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
   PetscReal lambda_target = 0; // load factor of the step being solved
   PetscReal lambda        = 0; // load factor of the last converged step
 
   // Record of the solve.
   std::vector<boltnet::StepInfo> steps;
-  PetscInt total_cutbacks = 0;
-  std::string failure; // non-empty after a step failed beyond the cut-back bound
+  PetscInt                       total_cutbacks = 0;
+  std::string                    failure; // non-empty after a step failed beyond the cut-back bound
 
   // Called on every rank after each converged step.
   std::function<PetscErrorCode(BoltnetAssembly, const boltnet::StepInfo &)> on_step;
@@ -168,15 +139,18 @@ struct _p_BoltnetAssembly {
 
 namespace boltnet {
 
-// A shell patch from a mesh (node sets included) and a section (network/api.cpp).
+// A shell part from a mesh (node sets included) and a section (model/describe.cpp).
 PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material);
 
-// Network assembly (network/assembly.cpp).
+// The network (network/build.cpp): lays the model out, builds and distributes the DMNetwork,
+// builds (and condenses) the operators of the owned patches and seams, the Jacobian and the
+// boundary rows.
 PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a);
+// Residual and Jacobian (network/residual.cpp, network/jacobian.cpp).
 PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx);
 PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx);
 // Evaluate every local joint at X against the committed history (no side effects): as the solver
-// sees it (frozen joints as linear springs), or with the full law everywhere.
+// sees it (frozen joints as linear springs), or with the full law everywhere (network/joints.cpp).
 PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps = nullptr, bool full_law = false);
 // Before an attempt at a step of the given load increment: choose the joints to solve as linear
 // springs (those whose predicted utilization stays below -joint_stuck_margin).
@@ -194,6 +168,9 @@ PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X);
 PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord> &records);
 // Impose the prescribed values of the constrained dof at load factor lambda on X.
 PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda);
+// Every dof of an owned shell patch (6 per node: mesh nodes, then joint nodes) at the solution X
+// and load factor lambda, recovering the interior of a condensed patch (network/boundary.cpp).
+PetscErrorCode AssemblyPatchDisplacement(BoltnetAssembly a, const OwnedPatch &op, const PetscScalar *xlocal, PetscReal lambda, std::vector<double> &u);
 
 // Solver (solver/*.cpp).
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);

@@ -17,16 +17,16 @@ PetscErrorCode MonitorJointStatesImpl(SNES snes, PetscInt its, PetscReal fnorm, 
   PetscFunctionBeginUser;
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(AssemblyEvaluateJoints(a, X, r));
-  if (its == 0) a->state_trace.assign(r.size(), {});
+  if (its == 0) a->joints.state_trace.assign(r.size(), {});
   PetscInt loc[7] = {0, 0, 0, 0, 0, 0, 0}, glob[7];
-  for (char f : a->frozen) loc[6] += f;
+  for (char f : a->joints.frozen) loc[6] += f;
   for (size_t i = 0; i < r.size(); ++i) {
     const PetscInt s = static_cast<PetscInt>(r[i].state);
-    if (!a->state_trace[i].empty() && a->state_trace[i].back() != s) loc[5]++;
-    a->state_trace[i].push_back(s);
+    if (!a->joints.state_trace[i].empty() && a->joints.state_trace[i].back() != s) loc[5]++;
+    a->joints.state_trace[i].push_back(s);
     loc[s]++;
   }
-  if (!a->monitor_states) PetscFunctionReturn(0);
+  if (!a->opt.monitor_states) PetscFunctionReturn(0);
   PetscCall(MPIU_Allreduce(loc, glob, 7, MPIU_INT, MPI_SUM, a->comm));
   PetscCall(PetscPrintf(a->comm, "  %3" PetscInt_FMT " joints: stick %" PetscInt_FMT " slide %" PetscInt_FMT " contact %" PetscInt_FMT " open %" PetscInt_FMT " linear %" PetscInt_FMT " | changed %" PetscInt_FMT " | as springs %" PetscInt_FMT " | ||F|| %g\n", its,
                         glob[static_cast<int>(State::Stick)], glob[static_cast<int>(State::Slide)], glob[static_cast<int>(State::Contact)], glob[static_cast<int>(State::Open)], glob[static_cast<int>(State::Linear)], glob[5], glob[6], (double)fnorm));
@@ -74,10 +74,7 @@ PetscErrorCode AssemblyDescribeSingular(BoltnetAssembly a, Vec X, std::string &m
     for (int d = 0; d < 3; ++d)
       if (std::abs(resp[i].tangent[7 * d]) <= 1e-12 * scale || scale == 0) none += (none.empty() ? "" : ",") + std::string(dir[d]);
     if (none.empty()) continue;
-    PetscInt key, nvar;
-    void    *data;
-    PetscCall(DMNetworkGetComponent(a->dm, a->jedges[i], 0, &key, &data, &nvar));
-    loc << "joint " << static_cast<JointComp *>(data)->id << " (" << stateName(resp[i].state) << ", no stiffness along " << none << "); ";
+    loc << "joint " << a->joints.comp[i].id << " (" << stateName(resp[i].state) << ", no stiffness along " << none << "); ";
     ++n;
   }
   std::string all;
@@ -94,15 +91,12 @@ PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg)
   // Local summary: (changes, joint id, sequence) for joints that changed state at least twice.
   std::ostringstream loc;
   PetscInt           n = 0;
-  for (size_t i = 0; i < a->jedges.size(); ++i) {
-    const auto &tr = a->state_trace.size() > i ? a->state_trace[i] : std::vector<PetscInt>{};
+  for (size_t i = 0; i < a->joints.size(); ++i) {
+    const auto &tr = a->joints.state_trace.size() > i ? a->joints.state_trace[i] : std::vector<PetscInt>{};
     PetscInt    changes = 0;
     for (size_t k = 1; k < tr.size(); ++k) changes += tr[k] != tr[k - 1];
     if (changes < 2 || n >= 10) continue;
-    PetscInt key, nvar;
-    void    *data;
-    PetscCall(DMNetworkGetComponent(a->dm, a->jedges[i], 0, &key, &data, &nvar));
-    loc << "joint " << static_cast<JointComp *>(data)->id << " (" << changes << " changes: ";
+    loc << "joint " << a->joints.comp[i].id << " (" << changes << " changes: ";
     const size_t first = tr.size() > 8 ? tr.size() - 8 : 0;
     if (first) loc << "... ";
     for (size_t k = first; k < tr.size(); ++k) loc << (k > first ? ">" : "") << stateName(static_cast<State>(tr[k]));

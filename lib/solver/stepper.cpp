@@ -19,7 +19,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscFunctionBeginUser;
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
-  PetscCall(SNESSetDM(a->snes, a->dm));
+  PetscCall(SNESSetDM(a->snes, a->net.dm));
   PetscCall(SNESSetFunction(a->snes, nullptr, AssemblyFormFunction, a));
   PetscCall(SNESSetJacobian(a->snes, a->J, a->J, AssemblyFormJacobian, a));
   PetscCall(SNESMonitorSet(a->snes, MonitorJointStates, a, nullptr));
@@ -76,9 +76,7 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   for (const Response &r : resp)
     for (double f : r.force) loc += f * f;
   PetscCall(MPIU_Allreduce(&loc, &fj, 1, MPIU_REAL, MPIU_SUM, a->comm));
-  loc = 0;
-  for (PetscReal v : a->force_values) loc += v * v;
-  PetscCall(MPIU_Allreduce(&loc, &fext, 1, MPIU_REAL, MPIU_SUM, a->comm));
+  fext = a->bc.fext_norm * a->bc.fext_norm; // every applied force, also those inside condensed patches
   PetscCall(VecDuplicate(Xtry, &F));
   PetscCall(AssemblyFormFunction(a->snes, Xtry, F, a));
   PetscCall(VecNorm(F, NORM_2, &r0));
@@ -97,7 +95,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
 {
   Vec Xtry;
   PetscFunctionBeginUser;
-  PetscCheck(a->dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
+  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
   PetscCheck(steps_per_segment >= 1, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "steps_per_segment %" PetscInt_FMT " must be >= 1", steps_per_segment);
   const std::vector<PetscReal> targets = LoadPathTargets(a->lambda, std::vector<PetscReal>(factors, factors + n), steps_per_segment);
   PetscCall(VecDuplicate(a->X, &Xtry));
@@ -128,7 +126,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         if (!nreleased) break;
         PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMax(1, maxit - its), PETSC_DEFAULT));
         PetscCall(PetscInfo(a->snes, "step %zu: %" PetscInt_FMT " joints solved as linear springs left their linear state; solving on with the full law for them\n", a->steps.size() + 1, nreleased));
-        if (a->monitor_states) PetscCall(PetscPrintf(a->comm, "  step %zu: %" PetscInt_FMT " joints solved as linear springs would leave their linear state: solving on with the full law for them\n", a->steps.size() + 1, nreleased));
+        if (a->opt.monitor_states) PetscCall(PetscPrintf(a->comm, "  step %zu: %" PetscInt_FMT " joints solved as linear springs would leave their linear state: solving on with the full law for them\n", a->steps.size() + 1, nreleased));
         PetscCall(SNESSolve(a->snes, nullptr, Xtry));
         PetscCall(SNESGetConvergedReason(a->snes, &reason));
         PetscCall(SNESGetIterationNumber(a->snes, &more));
@@ -136,7 +134,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
       }
       PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
       if (reason > 0) {
-        a->last_increment = a->lambda_target - a->lambda;
+        a->joints.last_increment = a->lambda_target - a->lambda;
         PetscCall(AssemblyCommit(a, Xtry));
         PetscCall(VecCopy(Xtry, a->X));
         a->lambda = a->lambda_target;
@@ -161,10 +159,10 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         PetscCall(AssemblyDescribeSingular(a, Xtry, singular));
         if (!singular.empty()) chatter += "; " + singular;
       }
-      if (cuts >= a->max_cuts) {
+      if (cuts >= a->opt.max_cuts) {
         std::ostringstream m;
         m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << " did not converge (" << SNESConvergedReasons[reason] << " after " << its
-          << " Newton iterations) after " << cuts << " cut-backs (-load_max_cuts " << a->max_cuts << "); " << chatter;
+          << " Newton iterations) after " << cuts << " cut-backs (-load_max_cuts " << a->opt.max_cuts << "); " << chatter;
         a->failure = m.str();
         PetscCall(VecDestroy(&Xtry));
         SETERRQ(a->comm, PETSC_ERR_NOT_CONVERGED, "%s", a->failure.c_str());

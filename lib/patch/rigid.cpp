@@ -1,4 +1,4 @@
-#include "coupling/rigid.hpp"
+#include "patch/rigid.hpp"
 
 namespace boltnet {
 

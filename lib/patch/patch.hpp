@@ -1,8 +1,9 @@
-// Shell patches: the plates carried by the network's vertices (issue 3). A patch is a quadrilateral
-// shell mesh plus one extra node per joint attached to it (the joint node, at the fastener); the
-// fastener's footprint nodes follow the joint node rigidly (lib/coupling). The patch is linear: its
-// stiffness is built once, on the rank that owns the vertex, as a sparse matrix in the patch's own
-// dof numbering (6 per node), and enters the residual as K u and the Jacobian as K.
+// Shell patches: the pieces of shell parts carried by the network's vertices. A patch is a set of
+// mesh nodes of one part, the elements between them, its share of the elements it has in common
+// with other patches of the part, and one extra node per joint attached to it (the joint node, at
+// the fastener), whose footprint nodes follow it rigidly (patch/rigid.hpp). The patch is linear: its
+// operator is built once, on the rank that owns the vertex, and is either kept whole (every node is
+// carried by the vertex) or condensed onto the patch's ports (patch/condense.hpp).
 #pragma once
 
 #include "mesh/mesh.hpp"
@@ -18,10 +19,19 @@
 namespace boltnet {
 
 struct ShellPatch {
-  PetscInt             id = -1;
-  QuadMesh             mesh;
+  PetscInt             id = -1; // user id of the part
+  QuadMesh             mesh;    // the patch's own nodes (part_node: their number in the part), its
+                                // whole elements, its node sets (patch numbering)
   shell::ShellMaterial material;
   double               drill = shell::kDefaultDrill;
+  // Elements shared with other patches of the part: node[k] is the patch's number of node k, or -1
+  // when node k lies in another patch. The patch adds the stiffness between its own nodes; the seams
+  // add the rest.
+  struct SharedElement {
+    shell::Nodes       X;
+    std::array<int, 4> node;
+  };
+  std::vector<SharedElement> shared;
   // Joint nodes: node mesh.x.size() + k is the k-th joint attached to this patch.
   struct JointNode {
     std::array<double, 3> x, axis;
@@ -33,13 +43,18 @@ struct ShellPatch {
   std::map<std::string, PetscInt> part_set_size;
   // Number in the whole part of each mesh node of this patch (empty: the patch is the whole part).
   std::vector<int> part_node;
+  // The nodes the network vertex carries, in order: every node (mesh, then joint nodes) when the
+  // patch is kept whole, its ports (the joint nodes and the nodes a seam touches) when condensed.
+  std::vector<int> carried;
+  std::map<int, int> carried_index; // node -> position in carried
+
   PetscInt nnodes() const { return (PetscInt)(mesh.x.size() + joint_nodes.size()); }
 };
 
-// A seam: the elements of a part whose nodes lie in two of its patches (va and vb, positions in the
-// assembly's patch list). It is a network edge; its elements' stiffness is added where the edge
-// lives. side[k] says whether node k of an element is in patch vb (1) or va (0), node[k] its number
-// there.
+// A seam: the stiffness between the nodes of two patches va and vb (positions in the layout's patch
+// list) of one part, from the elements they share. side[k] says whether node k of an element is in
+// va (0), vb (1) or a third patch (-1); node[k] is its number in the network vertex (its position in
+// that patch's carried nodes). A seam adds only the blocks between va and vb.
 struct Seam {
   PetscInt             part = -1; // user id of the part
   PetscInt             va = -1, vb = -1;
@@ -68,7 +83,8 @@ struct PatchOperator {
   std::vector<double>   vals;
 };
 
-// The patch operator A, linear: it enters the residual as A u and the Jacobian as A.
+// The patch operator A over all the patch's nodes (6 dof each), linear: it enters the residual as
+// A u and the Jacobian as A.
 //   penalty: the shell stiffness K plus the rigid links of every joint's footprint, with stiffness
 //            `penalty` (N/mm) on translations and `penalty * radius^2` on rotations.
 //   exact:   u = T v, v the dof of the nodes outside every footprint and of the joint nodes, the
@@ -76,9 +92,18 @@ struct PatchOperator {
 //            The rows of v hold T^T K T (the exact reduced stiffness, no slave column), each slave
 //            row holds c (u_s - T_s u_m) = 0 with c the mean translational diagonal of K, so that
 //            the slave dof stay in the vector with their true displacement. A node in two
-//            footprints must have been given to one joint before (AssemblyBuildNetwork).
+//            footprints must have been given to one joint before (patch/layout.cpp).
 //   node:    K alone (the joints attach to mesh nodes).
+// K includes the patch's whole elements and its share of the shared ones.
 // Throws std::invalid_argument (from the element) on degenerate elements.
 PatchOperator BuildShellOperator(const ShellPatch &p, CouplingType type, double penalty, double radius);
+
+// The slaves of exact coupling: for each mesh node of the patch in a footprint, the joint node it
+// follows (-1: none) and the 6 x 6 block T with u_s = T u_m (row major).
+struct SlaveMap {
+  std::vector<PetscInt>               master; // by mesh node
+  std::vector<std::array<double, 36>> T;      // by mesh node (unused where master < 0)
+};
+SlaveMap ExactSlaves(const ShellPatch &p);
 
 } // namespace boltnet

@@ -1,0 +1,169 @@
+// The description part of the public API of boltnet.h: parts, joints and boundary conditions go
+// into the assembly's model (model/model.hpp), unchecked against each other until set-up.
+#include "network/assembly.hpp"
+#include "core/guard.hpp"
+
+#include <cmath>
+#include <cstring>
+
+using namespace boltnet;
+
+namespace {
+
+// Build the rows (n, t1, t2) of the joint frame from the bolt axis and a first in-plane direction.
+PetscErrorCode JointFrame(MPI_Comm comm, PetscInt id, const PetscReal n[3], const PetscReal t[3], PetscReal R[9])
+{
+  PetscFunctionBeginUser;
+  const double nn = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  PetscCheck(nn > 0, comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": the bolt axis (normal) is the zero vector", id);
+  double e0[3] = {n[0] / nn, n[1] / nn, n[2] / nn};
+  // Remove the normal part of t so that a roughly in-plane direction is enough.
+  const double d  = t[0] * e0[0] + t[1] * e0[1] + t[2] * e0[2];
+  double       e1[3] = {t[0] - d * e0[0], t[1] - d * e0[1], t[2] - d * e0[2]};
+  const double tn = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  PetscCheck(tn > 1e-8 * std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]) && tn > 0, comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": the in-plane direction t1 is parallel to the bolt axis", id);
+  for (double &c : e1) c /= tn;
+  const double e2[3] = {e0[1] * e1[2] - e0[2] * e1[1], e0[2] * e1[0] - e0[0] * e1[2], e0[0] * e1[1] - e0[1] * e1[0]};
+  for (int k = 0; k < 3; ++k) {
+    R[k]     = e0[k];
+    R[3 + k] = e1[k];
+    R[6 + k] = e2[k];
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CheckNotSetUp(BoltnetAssembly a)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!a->net.dm, a->comm, PETSC_ERR_ORDER, "The assembly is already set up: describe it before BoltnetAssemblySetUp()");
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode BoltnetAssemblyAddRigidPatch(BoltnetAssembly a, PetscInt id, const PetscReal x[3])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  a->model.parts.push_back(PartDesc{id, PatchKind::Rigid, {x ? x[0] : 0.0, x ? x[1] : 0.0, x ? x[2] : 0.0}});
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *bp, const PetscReal normal[3], const PetscReal t1[3])
+{
+  PetscFunctionBeginUser;
+  PetscCall(BoltnetAssemblyAddJointAt(a, id, patch_a, patch_b, bp, normal, t1, nullptr));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddJointAt(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *bp, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  PetscCheck(bp, a->comm, PETSC_ERR_ARG_NULL, "Joint %" PetscInt_FMT ": null parameters", id);
+  JointDesc j{};
+  j.id     = id;
+  j.part_a = patch_a;
+  j.part_b = patch_b;
+  for (int k = 0; k < 3; ++k) j.x[k] = x ? x[k] : 0.0;
+  Params &p           = j.params;
+  PetscCheck(bp->law >= BOLTNET_LAW_SPRING && bp->law <= BOLTNET_LAW_FRICTION, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": unknown law %d", id, (int)bp->law);
+  p.law            = static_cast<Law>(bp->law);
+  p.kn             = bp->kn;
+  p.kt             = bp->kt;
+  p.kr             = bp->kr;
+  p.kc             = bp->kc;
+  p.kg             = bp->kg;
+  p.gap            = bp->gap;
+  p.mu             = bp->mu;
+  p.nf             = bp->nf;
+  p.pretension     = bp->pretension;
+  p.clamp_coupling = bp->clamp_coupling;
+  p.offset[0]      = bp->offset[0];
+  p.offset[1]      = bp->offset[1];
+  const std::string bad = validate(p);
+  PetscCheck(bad.empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " (%s law): %s", id, lawName(p.law), bad.c_str());
+  const PetscReal ndef[3] = {0, 0, 1}, tdef[3] = {1, 0, 0};
+  PetscCall(JointFrame(a->comm, id, normal ? normal : ndef, t1 ? t1 : tdef, j.R.data()));
+  a->model.joints.push_back(j);
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly a, PetscInt patch, PetscInt dof, BoltnetBCKind kind, PetscReal value)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  PetscCheck(dof >= -1 && dof < 6, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": dof %" PetscInt_FMT " is not in 0..5 (ux uy uz rx ry rz) or -1 (all)", patch, dof);
+  PetscCheck(kind >= BOLTNET_BC_FIXED && kind <= BOLTNET_BC_FORCE, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": unknown kind %d", patch, (int)kind);
+  PetscCheck(std::isfinite(value), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": value is not finite", patch);
+  a->model.bcs.push_back(BCDesc{patch, "", dof, kind, value});
+  PetscFunctionReturn(0);
+}
+
+namespace boltnet {
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  PetscCheck(!mesh.quads.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  const PetscInt pos = (PetscInt)a->model.parts.size();
+  a->model.parts.push_back(PartDesc{id, PatchKind::Shell, mesh.x[0]});
+  ShellPart &sp = a->model.shells[pos];
+  sp.mesh       = std::move(mesh);
+  sp.material   = material;
+  PetscFunctionReturn(0);
+}
+} // namespace boltnet
+
+PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  QuadMesh             mesh;
+  shell::ShellMaterial mat;
+  PetscFunctionBeginUser;
+  PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+  for (PetscInt e = 0; e < nquads; ++e) {
+    std::array<int, 4> q;
+    for (int k = 0; k < 4; ++k) {
+      PetscCheck(quads[4 * e + k] >= 0 && quads[4 * e + k] < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": quadrangle %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT, id, e, quads[4 * e + k], nnodes - 1);
+      q[k] = (int)quads[4 * e + k];
+    }
+    mesh.quads.push_back(q);
+  }
+  PetscCall(Guard(a->comm, [&] {
+    mat = shell::IsotropicMaterial(E, nu, t);
+    return PetscErrorCode(0);
+  }));
+  PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly a, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a));
+  const PetscInt pos = a->model.Find(patch);
+  ShellPart     *sp  = a->model.shells.count(pos) ? &a->model.shells[pos] : nullptr;
+  PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
+  std::vector<int> &set = sp->mesh.node_sets[name];
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscCheck(nodes[i] >= 0 && nodes[i] < (PetscInt)sp->mesh.x.size(), a->comm, PETSC_ERR_USER_INPUT, "Node set '%s' of patch %" PetscInt_FMT ": node %" PetscInt_FMT " does not exist", name, patch, nodes[i]);
+    set.push_back((int)nodes[i]);
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddBCOnSet(BoltnetAssembly a, PetscInt patch, const char set[], PetscInt dof, BoltnetBCKind kind, PetscReal value)
+{
+  PetscFunctionBeginUser;
+  PetscCall(BoltnetAssemblyAddBC(a, patch, dof, kind, value));
+  if (set && set[0]) {
+    const PetscInt   pos = a->model.Find(patch);
+    const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;
+    PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on set '%s': patch %" PetscInt_FMT " is not a shell patch", set, patch);
+    PetscCheck(sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
+    a->model.bcs.back().set = set;
+  }
+  PetscFunctionReturn(0);
+}
+

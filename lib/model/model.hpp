@@ -1,0 +1,64 @@
+// What the user described: parts (rigid bodies and shell parts), fasteners (the joints between
+// them) and boundary conditions, in the user's own ids and numbering. Nothing here knows about
+// patches, ranks or PETSc objects: lib/patch/layout.hpp turns a model into patches and seams, and
+// lib/network puts those on a DMNetwork.
+#pragma once
+
+#include "boltnet.h"
+#include "joint/law.hpp"
+#include "mesh/mesh.hpp"
+#include "shell/shell.hpp"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace boltnet {
+
+// Patch kinds. A rigid patch is one 6-dof node; a shell patch is a piece of a meshed shell part.
+enum class PatchKind : PetscInt { Rigid = 0, Shell = 1 };
+
+struct PartDesc {
+  PetscInt              id;   // user id
+  PatchKind             kind;
+  std::array<double, 3> x;    // rigid: the node; shell: the first mesh node
+};
+
+struct ShellPart {
+  QuadMesh             mesh; // node sets included
+  shell::ShellMaterial material;
+  double               drill = shell::kDefaultDrill;
+};
+
+struct JointDesc {
+  PetscInt              id;             // user id
+  PetscInt              part_a, part_b; // user ids of the parts it joins
+  std::array<double, 3> x;              // fastener position (where it attaches to shell parts)
+  std::array<double, 9> R;              // local frame rows (n, t1, t2)
+  Params                params;
+};
+
+struct BCDesc {
+  PetscInt      patch; // user id of the part
+  std::string   set;   // node set of a shell part ("" : every node of the part)
+  PetscInt      dof;   // 0..5, or -1 for all six
+  BoltnetBCKind kind;
+  PetscReal     value; // per unit load factor (fixed: ignored); a force is the set's total
+};
+
+struct Model {
+  std::vector<PartDesc>         parts;  // in the order described
+  std::map<PetscInt, ShellPart> shells; // the shell parts, by position in parts
+  std::vector<JointDesc>        joints;
+  std::vector<BCDesc>           bcs;
+  // Position in parts of the part with user id `id`, or -1.
+  PetscInt Find(PetscInt id) const
+  {
+    for (size_t i = 0; i < parts.size(); ++i)
+      if (parts[i].id == id) return (PetscInt)i;
+    return -1;
+  }
+};
+
+} // namespace boltnet

@@ -1,0 +1,223 @@
+// The network (assembly.hpp): the layout put on a DMNetwork, distributed, and the operators of what
+// each rank owns built there.
+#include "core/guard.hpp"
+#include "core/log.hpp"
+#include "network/assembly.hpp"
+#include "network/internal.hpp"
+#include "partition/balance.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace boltnet {
+namespace {
+
+// The automatic patch size (-patch_max_nodes -1). Kept whole, a patch is cut only to share a part
+// between ranks: about eight patches per rank, none under 32 nodes, no cut on one rank. Condensed,
+// a patch is also cut for its own sake: the factorisation of one large patch costs more than
+// those of several smaller ones plus the larger interface (docs/solver.md measures the trade-off).
+long AutomaticPatchSize(BoltnetAssembly a)
+{
+  PetscInt total = 0;
+  for (const auto &kv : a->model.shells) total += (PetscInt)kv.second.mesh.x.size();
+  if (!a->opt.condense) return a->size == 1 ? 0 : std::max<long>(32, (total + 8 * a->size - 1) / (8 * a->size));
+  // Condensed: no patch over kCondensedPatchNodes, and on several ranks about four patches per
+  // rank so that METIS can balance them, none cut below 64 nodes.
+  if (a->size == 1) return kCondensedPatchNodes;
+  return std::min<long>(kCondensedPatchNodes, std::max<long>(64, (total + 4 * a->size - 1) / (4 * a->size)));
+}
+
+// Rank 0 lays the whole network out (the graph and its plain components only: no mesh), then
+// DMNetworkDistribute spreads it with the partition of SetPatchPartition.
+PetscErrorCode CreateNetwork(BoltnetAssembly a)
+{
+  Layout &L = a->layout;
+  PetscFunctionBeginUser;
+  const PetscInt        njoint = (PetscInt)L.joints.size(), nseam = (PetscInt)L.seams.size();
+  std::vector<PetscInt> edgelist = LayoutEdgeList(L);
+  PetscCall(DMNetworkCreate(a->comm, &a->net.dm));
+  DM dm = a->net.dm;
+  PetscCall(DMNetworkSetNumSubNetworks(dm, PETSC_DECIDE, 1));
+  PetscCall(DMNetworkRegisterComponent(dm, "patch", sizeof(PatchComp), &a->net.keyPatch));
+  PetscCall(DMNetworkRegisterComponent(dm, "joint", sizeof(JointComp), &a->net.keyJoint));
+  PetscCall(DMNetworkRegisterComponent(dm, "seam", sizeof(SeamComp), &a->net.keySeam));
+  const PetscInt ne = a->rank == 0 ? njoint + nseam : 0;
+  PetscCall(DMNetworkAddSubnetwork(dm, "assembly", ne, a->rank == 0 ? edgelist.data() : nullptr, nullptr));
+  PetscCall(DMNetworkLayoutSetUp(dm));
+  std::vector<SeamComp> seamcomps(nseam);
+  if (a->rank == 0) {
+    PetscInt        nv, nee;
+    const PetscInt *vtx, *edges;
+    PetscCall(DMNetworkGetSubnetwork(dm, 0, &nv, &nee, &vtx, &edges));
+    for (PetscInt i = 0; i < njoint; ++i) PetscCall(DMNetworkAddComponent(dm, edges[i], a->net.keyJoint, &L.joints[i], 0));
+    for (PetscInt i = 0; i < nseam; ++i) {
+      seamcomps[i] = SeamComp{i, L.seams[i].part};
+      PetscCall(DMNetworkAddComponent(dm, edges[njoint + i], a->net.keySeam, &seamcomps[i], 0));
+    }
+    for (PetscInt i = 0; i < nv; ++i) {
+      PetscInt gidx;
+      PetscCall(DMNetworkGetGlobalVertexIndex(dm, vtx[i], &gidx));
+      PatchComp &p = L.patches[gidx];
+      PetscCall(DMNetworkAddComponent(dm, vtx[i], a->net.keyPatch, &p, 6 * p.nnodes));
+    }
+  }
+  PetscCall(DMNetworkFinalizeComponents(dm));
+  if (a->size > 1 && a->opt.balance) {
+    std::vector<PetscInt> weights; // every dof of the patch: the work of building (condensing) it
+    if (a->rank == 0)
+      for (size_t i = 0; i < L.patches.size(); ++i) {
+        auto sh = L.shells.find((PetscInt)i);
+        weights.push_back(6 * (sh == L.shells.end() ? 1 : sh->second.nnodes()));
+      }
+    PetscCall(SetPatchPartition(dm, weights, a->rank == 0 ? edgelist : std::vector<PetscInt>{}));
+  }
+  PetscCall(DMNetworkDistribute(&a->net.dm, 0));
+  PetscCall(DMNetworkGetVertexRange(a->net.dm, &a->net.vStart, &a->net.vEnd));
+  PetscCall(DMNetworkGetEdgeRange(a->net.dm, &a->net.eStart, &a->net.eEnd));
+  PetscFunctionReturn(0);
+}
+
+// The owned patches, the local joints (aligned copies of their components with their offsets) and
+// the local seams.
+PetscErrorCode LocalViews(BoltnetAssembly a)
+{
+  DM dm = a->net.dm;
+  PetscFunctionBeginUser;
+  a->patches.owned.clear();
+  for (PetscInt v = a->net.vStart; v < a->net.vEnd; ++v) {
+    PetscBool ghost;
+    PetscCall(DMNetworkIsGhostVertex(dm, v, &ghost));
+    if (ghost) continue;
+    PatchComp p;
+    PetscCall(NetworkComponent(dm, v, nullptr, &p, sizeof p));
+    OwnedPatch op;
+    op.v     = v;
+    op.index = p.index;
+    op.shell = p.kind == static_cast<PetscInt>(PatchKind::Shell);
+    PetscCall(DMNetworkGetGlobalVecOffset(dm, v, ALL_COMPONENTS, &op.goff));
+    PetscCall(DMNetworkGetLocalVecOffset(dm, v, ALL_COMPONENTS, &op.loff));
+    a->patches.owned.push_back(std::move(op));
+  }
+  JointSet &js = a->joints;
+  js       = JointSet{};
+  a->net.sedges.clear();
+  for (PetscInt e = a->net.eStart; e < a->net.eEnd; ++e) {
+    PetscInt key;
+    PetscCall(NetworkComponent(dm, e, &key, nullptr, 0));
+    if (key == a->net.keySeam) {
+      a->net.sedges.push_back(e);
+      continue;
+    }
+    JointComp       j;
+    const PetscInt *cone;
+    PetscInt        la, lb, ga, gb;
+    PetscCall(NetworkComponent(dm, e, nullptr, &j, sizeof j));
+    PetscCall(DMNetworkGetConnectedVertices(dm, e, &cone));
+    PetscCall(DMNetworkGetLocalVecOffset(dm, cone[0], ALL_COMPONENTS, &la));
+    PetscCall(DMNetworkGetLocalVecOffset(dm, cone[1], ALL_COMPONENTS, &lb));
+    PetscCall(DMNetworkGetGlobalVecOffset(dm, cone[0], ALL_COMPONENTS, &ga));
+    PetscCall(DMNetworkGetGlobalVecOffset(dm, cone[1], ALL_COMPONENTS, &gb));
+    std::array<PetscInt, 12> rows;
+    for (int i = 0; i < 6; ++i) {
+      rows[i]     = ga + 6 * j.node_a + i;
+      rows[6 + i] = gb + 6 * j.node_b + i;
+    }
+    js.comp.push_back(j);
+    js.edge.push_back(e);
+    js.oa.push_back(la + 6 * j.node_a);
+    js.ob.push_back(lb + 6 * j.node_b);
+    js.rows.push_back(rows);
+  }
+  js.committed.assign(js.size(), History{});
+  PetscFunctionReturn(0);
+}
+
+// The operators of the owned shell patches (kept whole or condensed) and of the owned seams.
+PetscErrorCode BuildOperators(BoltnetAssembly a)
+{
+  PetscFunctionBeginUser;
+  const double penalty_factor = a->opt.coupling_penalty;
+  PetscCall(PetscLogEventBegin(Events().condense, 0, 0, 0, 0));
+  PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    a->patches.condensed_bytes = 0;
+    for (OwnedPatch &op : a->patches.owned) {
+      if (!op.shell) continue;
+      const ShellPatch &sp      = a->layout.shells.at(op.index);
+      const double      penalty = penalty_factor * sp.material.A[0];
+      if (!a->opt.condense) {
+        op.op = BuildShellOperator(sp, a->opt.coupling_type, penalty, a->opt.coupling_radius);
+        continue;
+      }
+      PatchLoads loads;
+      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, &loads));
+      PetscCall(CondensePatch(sp, a->opt.coupling_type, penalty, a->opt.coupling_radius, loads, &op.cond));
+      a->patches.condensed_bytes += op.cond.bytes;
+    }
+    for (PetscInt e : a->net.sedges) {
+      SeamComp sc;
+      PetscCall(NetworkComponent(a->net.dm, e, nullptr, &sc, sizeof sc));
+      const Seam &seam = a->layout.seams.at(sc.index);
+      auto       &Ks   = a->patches.seam_ops[e];
+      Ks.resize(seam.elems.size());
+      for (size_t k = 0; k < seam.elems.size(); ++k) shell::ElementStiffness(seam.elems[k].X, seam.material, seam.drill, Ks[k]);
+    }
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(PetscLogEventEnd(Events().condense, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, size_t bytes)
+{
+  PetscInt k, nvar;
+  void    *data;
+  PetscFunctionBeginUser;
+  PetscCall(DMNetworkGetComponent(dm, p, 0, &k, &data, &nvar));
+  if (key) *key = k;
+  if (out) std::memcpy(out, data, bytes); // the component storage is not aligned for doubles
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Events().layout, 0, 0, 0, 0));
+  LayoutOptions lo;
+  lo.coupling  = a->opt.coupling_type;
+  lo.radius    = a->opt.coupling_radius;
+  lo.reach     = a->opt.coupling_reach;
+  lo.max_nodes = a->opt.patch_max_nodes < 0 ? AutomaticPatchSize(a) : a->opt.patch_max_nodes;
+  lo.condense  = a->opt.condense;
+  a->net.ndof_model = 0;
+  for (const PartDesc &p : a->model.parts) {
+    auto sh = a->model.shells.find(&p - a->model.parts.data());
+    a->net.ndof_model += 6 * (sh == a->model.shells.end() ? 1 : (PetscInt)sh->second.mesh.x.size());
+  }
+  PetscCall(LayoutCreate(a->comm, a->model, lo, &a->layout));
+  for (const auto &kv : a->layout.shells) a->net.ndof_model += 6 * (PetscInt)kv.second.joint_nodes.size();
+  PetscCall(PetscLogEventEnd(Events().layout, 0, 0, 0, 0));
+
+  PetscCall(PetscLogEventBegin(Events().network, 0, 0, 0, 0));
+  PetscCall(CreateNetwork(a));
+  PetscCall(LocalViews(a));
+  PetscCall(PetscLogEventEnd(Events().network, 0, 0, 0, 0));
+  PetscCall(BuildOperators(a));
+
+  PetscCall(DMCreateGlobalVector(a->net.dm, &a->X));
+  PetscCall(VecGetSize(a->X, &a->net.ndof_global));
+  {
+    PetscInt mine = 0, nmax;
+    for (const OwnedPatch &op : a->patches.owned) mine += 6 * (op.shell ? a->layout.shells.at(op.index).nnodes() : 1);
+    PetscCallMPI(MPI_Allreduce(&mine, &nmax, 1, MPIU_INT, MPI_MAX, a->comm));
+    a->net.dof_imbalance = a->net.ndof_model > 0 ? (PetscReal)nmax * a->size / (PetscReal)a->net.ndof_model : 1;
+  }
+  PetscCall(VecSet(a->X, 0.0));
+  PetscCall(AssemblyCreateJacobian(a));
+  PetscCall(AssemblySetUpBoundary(a));
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet

@@ -1,0 +1,244 @@
+// The Jacobian of the network: its exact nonzero pattern, its near-null space, and its assembly.
+#include "core/guard.hpp"
+#include "core/log.hpp"
+#include "network/internal.hpp"
+
+#include <cstring>
+
+namespace boltnet {
+namespace {
+
+// Seam element blocks: the rows of the nodes on each side (global dof), -1 elsewhere.
+void SideRows(const Seam::Element &el, PetscInt ga, PetscInt gb, PetscInt rows[2][24], PetscInt idx[2][24], int n[2])
+{
+  n[0] = n[1] = 0;
+  for (int k = 0; k < 4; ++k) {
+    const int s = el.side[k];
+    if (s < 0) continue;
+    for (int i = 0; i < 6; ++i) {
+      rows[s][n[s]] = (s ? gb : ga) + 6 * el.node[k] + i;
+      idx[s][n[s]]  = 6 * k + i;
+      n[s]++;
+    }
+  }
+}
+
+// Add the blocks between the two sides of every element of an owned seam: (side 0 rows, side 1
+// columns) and (side 1 rows, side 0 columns). The blocks within one side belong to the patches.
+PetscErrorCode AddSeamBlocks(BoltnetAssembly a, Mat M, bool values)
+{
+  PetscFunctionBeginUser;
+  std::vector<PetscScalar> blk(24 * 24, 0.0);
+  for (PetscInt e : a->net.sedges) {
+    const Seam *seam;
+    PetscInt    ga, gb;
+    PetscCall(SeamOf(a, e, &seam));
+    PetscCall(SeamOffsets(a, e, PETSC_TRUE, &ga, &gb));
+    const auto *Ks = values ? &a->patches.seam_ops.at(e) : nullptr;
+    for (size_t k = 0; k < seam->elems.size(); ++k) {
+      PetscInt rows[2][24], idx[2][24];
+      int      n[2];
+      SideRows(seam->elems[k], ga, gb, rows, idx, n);
+      for (int s = 0; s < 2; ++s) {
+        const int t = 1 - s;
+        for (int i = 0; i < n[s]; ++i)
+          for (int j = 0; j < n[t]; ++j) blk[(size_t)i * n[t] + j] = values ? (*Ks)[k][24 * idx[s][i] + idx[t][j]] : 0.0;
+        PetscCall(MatSetValues(M, n[s], rows[s], n[t], rows[t], blk.data(), values ? ADD_VALUES : INSERT_VALUES));
+      }
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+// Add the owned patches' operators (values false: zeros, for the pattern).
+PetscErrorCode AddPatchBlocks(BoltnetAssembly a, Mat M, bool values)
+{
+  PetscFunctionBeginUser;
+  std::vector<PetscInt>    cols;
+  std::vector<PetscScalar> z;
+  for (const OwnedPatch &op : a->patches.owned) {
+    if (!op.shell) continue;
+    if (a->opt.condense) {
+      const PetscInt nb = op.cond.nb;
+      cols.resize(nb);
+      for (PetscInt i = 0; i < nb; ++i) cols[i] = op.goff + i;
+      if (!values) z.assign((size_t)nb * nb, 0.0);
+      PetscCall(MatSetValues(M, nb, cols.data(), nb, cols.data(), values ? op.cond.S.data() : z.data(), values ? ADD_VALUES : INSERT_VALUES));
+      continue;
+    }
+    for (PetscInt r = 0; r < op.op.n; ++r) {
+      const PetscInt row = op.goff + r, b = op.op.rowptr[r], e = op.op.rowptr[r + 1];
+      cols.resize(e - b);
+      for (PetscInt k = b; k < e; ++k) cols[k - b] = op.goff + op.op.cols[k];
+      if (!values) z.assign(e - b, 0.0);
+      PetscCall(MatSetValues(M, 1, &row, e - b, cols.data(), values ? op.op.vals.data() + b : z.data(), values ? ADD_VALUES : INSERT_VALUES));
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+// The coordinates of every node an owned vertex carries (for the rigid-body modes).
+void CarriedCoordinates(BoltnetAssembly a, std::vector<std::array<double, 3>> &x)
+{
+  x.clear();
+  for (const OwnedPatch &op : a->patches.owned) {
+    if (!op.shell) {
+      const PatchComp &p = a->layout.patches[op.index];
+      x.push_back({p.x[0], p.x[1], p.x[2]});
+      continue;
+    }
+    const ShellPatch &sp    = a->layout.shells.at(op.index);
+    const int         nmesh = (int)sp.mesh.x.size();
+    for (int n : sp.carried) x.push_back(n < nmesh ? sp.mesh.x[n] : sp.joint_nodes[n - nmesh].x);
+  }
+}
+
+// The six rigid-body modes of the network's dof (three translations, three rotations
+// u = theta x (x - c), with the rotation dof set), orthonormalised, as the Jacobian's near-null
+// space: what GAMG needs for 6-dof shell nodes (MatNullSpaceCreateRigidBody handles only block
+// sizes 1-3; docs/architecture.md).
+PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
+{
+  std::vector<std::array<double, 3>> x;
+  Vec                                modes[6];
+  MatNullSpace                       nsp;
+  PetscFunctionBeginUser;
+  CarriedCoordinates(a, x);
+  double c[3] = {0, 0, 0}, cg[3];
+  double nloc = (double)x.size(), ng;
+  for (const auto &p : x)
+    for (int k = 0; k < 3; ++k) c[k] += p[k];
+  PetscCallMPI(MPI_Allreduce(c, cg, 3, MPI_DOUBLE, MPI_SUM, a->comm));
+  PetscCallMPI(MPI_Allreduce(&nloc, &ng, 1, MPI_DOUBLE, MPI_SUM, a->comm));
+  for (int k = 0; k < 3; ++k) cg[k] /= ng > 0 ? ng : 1;
+  for (int m = 0; m < 6; ++m) {
+    PetscScalar *v;
+    PetscCall(VecDuplicate(a->X, &modes[m]));
+    PetscCall(VecGetArray(modes[m], &v));
+    for (size_t n = 0; n < x.size(); ++n) {
+      PetscScalar *u = v + 6 * n;
+      for (int i = 0; i < 6; ++i) u[i] = 0;
+      if (m < 3) u[m] = 1;
+      else {
+        const int    k    = m - 3;
+        const double d[3] = {x[n][0] - cg[0], x[n][1] - cg[1], x[n][2] - cg[2]};
+        const double e[3] = {k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0};
+        u[0]              = e[1] * d[2] - e[2] * d[1];
+        u[1]              = e[2] * d[0] - e[0] * d[2];
+        u[2]              = e[0] * d[1] - e[1] * d[0];
+        u[3 + k]          = 1;
+      }
+    }
+    PetscCall(VecRestoreArray(modes[m], &v));
+    for (int q = 0; q < m; ++q) { // modified Gram-Schmidt
+      PetscScalar dot;
+      PetscCall(VecDot(modes[m], modes[q], &dot));
+      PetscCall(VecAXPY(modes[m], -dot, modes[q]));
+    }
+    PetscCall(VecNormalize(modes[m], nullptr));
+  }
+  PetscCall(MatNullSpaceCreate(a->comm, PETSC_FALSE, 6, modes, &nsp));
+  PetscCall(MatSetNearNullSpace(a->J, nsp));
+  PetscCall(MatNullSpaceDestroy(&nsp));
+  for (int m = 0; m < 6; ++m) PetscCall(VecDestroy(&modes[m]));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+// The Jacobian's nonzero pattern, counted exactly with MATPREALLOCATOR: each joint couples the 6
+// dof of its node on patch a with those of its node on patch b (12 x 12), wherever the two
+// vertices live; each owned patch contributes its own pattern (condensed: a dense block on its
+// ports; a rigid patch: its diagonal), each seam its blocks between its two patches.
+// DMNetwork's own user-block preallocation (DMNetworkHasJacobian + DMNetworkVertexSetMatrix) was
+// tried first and, in PETSc 3.18.5, under-allocates couplings through edges owned by another rank
+// ("new nonzero caused a malloc" inside DMCreateMatrix_Network on the chain scene at 2 ranks):
+// docs/architecture.md.
+PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
+{
+  Mat      pre;
+  PetscInt n;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(a->X, &n));
+  PetscCall(MatCreate(a->comm, &pre));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pre, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(pre, 6));
+  PetscCall(MatSetUp(pre));
+  PetscScalar zeros[144] = {0};
+  for (const auto &rows : a->joints.rows) PetscCall(MatSetValues(pre, 12, rows.data(), 12, rows.data(), zeros, INSERT_VALUES));
+  PetscCall(AddSeamBlocks(a, pre, false));
+  PetscInt rstart;
+  PetscCall(VecGetOwnershipRange(a->X, &rstart, nullptr));
+  for (PetscInt i = rstart; i < rstart + n; ++i) PetscCall(MatSetValue(pre, i, i, 0.0, INSERT_VALUES));
+  PetscCall(AddPatchBlocks(a, pre, false));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(a->comm, &a->J));
+  PetscCall(MatSetType(a->J, MATAIJ));
+  PetscCall(MatSetSizes(a->J, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetBlockSize(a->J, 6));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, a->J));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatSetOption(a->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(MatSetOption(a->J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(SetRigidBodyModes(a));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+{
+  BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
+  JointSet             &js = a->joints;
+  std::vector<Response> resp;
+  PetscFunctionBeginUser;
+  PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  PetscCall(PetscLogEventBegin(Events().jacobian, 0, 0, 0, 0));
+  // Linear where it can be: the patches and seams are linear, so when no joint's tangent differs
+  // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
+  // object state, and PCSetUp then keeps the factorisation too.
+  if (a->opt.stuck_linear && J == P && P == a->J && js.jac_valid) {
+    PetscMPIInt changed = 0, any;
+    for (size_t k = 0; k < resp.size() && !changed; ++k) changed = std::memcmp(resp[k].tangent.data(), js.jac_tangent[k].data(), sizeof(Mat6)) != 0;
+    PetscCallMPI(MPIU_Allreduce(&changed, &any, 1, MPI_INT, MPI_LOR, a->comm));
+    if (!any) {
+      ++js.jac_reused;
+      PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
+      PetscFunctionReturn(0);
+    }
+  }
+  PetscCall(MatZeroEntries(P));
+  for (size_t k = 0; k < js.size(); ++k) {
+    PetscScalar vals[144];
+    const Mat6  K = GlobalTangent(js.comp[k].R, resp[k].tangent);
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) {
+        const double sign = ((i < 6) == (j < 6)) ? 1.0 : -1.0;
+        vals[12 * i + j]  = sign * K[6 * (i % 6) + (j % 6)];
+      }
+    PetscCall(MatSetValues(P, 12, js.rows[k].data(), 12, js.rows[k].data(), vals, ADD_VALUES));
+  }
+  PetscCall(AddSeamBlocks(a, P, true));
+  PetscCall(AddPatchBlocks(a, P, true));
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatZeroRows(P, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
+  PetscCall(MatNorm(P, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
+  ++js.jac_assembled;
+  js.jac_valid = (P == a->J) ? PETSC_TRUE : PETSC_FALSE;
+  js.jac_tangent.resize(resp.size());
+  for (size_t k = 0; k < resp.size(); ++k) js.jac_tangent[k] = resp[k].tangent;
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+{
+  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyFormJacobianImpl(snes, X, J, P, ctx); });
+}
+
+} // namespace boltnet

@@ -1,0 +1,187 @@
+#include "patch/condense.hpp"
+#include "patch/operator.hpp"
+
+#include <petscmat.h>
+
+#include <algorithm>
+
+namespace boltnet {
+
+PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double penalty, double radius, const PatchLoads &loads, CondensedPatch *cp)
+{
+  PetscFunctionBeginUser;
+  const PetscInt ndof = 6 * p.nnodes(), nmesh = (PetscInt)p.mesh.x.size();
+  // Classes of the patch dof: row of K (>= 0: interior rows first, then the ports), or -1 for a
+  // slave, -2 for a prescribed interior dof.
+  std::vector<PetscInt> row(ndof, -1);
+  if (type == CouplingType::Exact) cp->slaves = ExactSlaves(p);
+  std::vector<char> port(p.nnodes(), 0);
+  for (int n : p.carried) port[n] = 1;
+  cp->nb = 6 * (PetscInt)p.carried.size();
+  cp->interior.clear();
+  cp->prescribed.clear();
+  for (PetscInt d = 0; d < ndof; ++d) {
+    const PetscInt node = d / 6;
+    if (port[node]) continue;
+    if (node < nmesh && !cp->slaves.master.empty() && cp->slaves.master[node] >= 0) continue; // slave
+    auto pr = loads.prescribed.find(d);
+    if (pr != loads.prescribed.end()) {
+      row[d]             = -2;
+      cp->prescribed[d] = pr->second;
+      continue;
+    }
+    row[d] = (PetscInt)cp->interior.size();
+    cp->interior.push_back(d);
+  }
+  cp->ni = (PetscInt)cp->interior.size();
+  for (size_t k = 0; k < p.carried.size(); ++k)
+    for (int c = 0; c < 6; ++c) row[6 * p.carried[k] + c] = cp->ni + 6 * (PetscInt)k + c;
+  const PetscInt n = cp->ni + cp->nb;
+
+  // K over I and B; the columns of D go to the load terms, per unit load factor.
+  Triplets              t = PatchTriplets(p, type, penalty, radius, false);
+  std::vector<PetscInt> nnz(n, 0);
+  std::vector<double>   rI(cp->ni, 0.0), cB(cp->nb, 0.0);
+  for (const auto &[r, c, v] : t) {
+    const PetscInt R = row[r], C = row[c];
+    if (R >= 0 && C >= 0) nnz[R]++;
+    if (R >= 0 && C == -2) (R < cp->ni ? rI[R] : cB[R - cp->ni]) -= v * cp->prescribed.at(c);
+  }
+  for (const auto &[d, f] : loads.force)
+    if (row[d] >= 0 && row[d] < cp->ni) rI[row[d]] += f; // forces on the ports are the network's
+  for (PetscInt r = 0; r < n; ++r) nnz[r] = std::min(nnz[r], n); // duplicates are summed
+  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), cp->K.out()));
+  Mat K = cp->K.get();
+  PetscCall(MatSetOption(K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+  for (const auto &[r, c, v] : t) {
+    const PetscInt R = row[r], C = row[c];
+    if (R >= 0 && C >= 0) PetscCall(MatSetValue(K, R, C, v, ADD_VALUES));
+  }
+  PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+  cp->S.assign((size_t)cp->nb * cp->nb, 0.0);
+  cp->c.assign(cp->nb, 0.0);
+  cp->w0.assign(cp->ni, 0.0);
+  // K's rows of the load terms that prescribed interior dof give the ports: -K_BD u_D was summed
+  // in cB with the sign of a force; the internal force is +K_BD u_D.
+  for (PetscInt b = 0; b < cp->nb; ++b) cp->c[b] = -cB[b];
+
+  if (cp->ni == 0) { // every dof is a port: S is K itself
+    for (PetscInt r = 0; r < n; ++r) {
+      PetscInt           nc;
+      const PetscInt    *cols;
+      const PetscScalar *vals;
+      PetscCall(MatGetRow(K, r, &nc, &cols, &vals));
+      for (PetscInt k = 0; k < nc; ++k) cp->S[(size_t)r * cp->nb + cols[k]] = vals[k];
+      PetscCall(MatRestoreRow(K, r, &nc, &cols, &vals));
+    }
+    PetscFunctionReturn(0);
+  }
+
+  ISHandle isB;
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, cp->nb, cp->ni, 1, isB.out()));
+  // MUMPS sizes its integer workspace at the analysis from its estimate plus ICNTL(14) per cent; a
+  // Schur complement larger than the interior (a small patch with many ports) makes that estimate
+  // short (INFOG(1) = -8 or -9, seen on 36-node patches): analyse and factor again with more room.
+  PetscInt infog1 = 0, nullpivots = 0;
+  for (PetscInt relax = 50;; relax *= 4) {
+    MatFactorInfo info;
+    PetscCall(MatGetFactor(K, MATSOLVERMUMPS, MAT_FACTOR_CHOLESKY, cp->F.out()));
+    PetscCall(MatMumpsSetIcntl(cp->F.get(), 14, relax));
+    PetscCall(MatMumpsSetIcntl(cp->F.get(), 24, 1)); // detect null pivots: a singular interior is reported, not factored
+    PetscCall(MatFactorSetSchurIS(cp->F.get(), isB.get()));
+    PetscCall(MatFactorInfoInitialize(&info));
+    PetscCall(MatCholeskyFactorSymbolic(cp->F.get(), K, nullptr, &info));
+    PetscCall(MatCholeskyFactorNumeric(cp->F.get(), K, &info));
+    PetscCall(MatMumpsGetInfog(cp->F.get(), 1, &infog1));
+    if (!(infog1 == -8 || infog1 == -9) || relax > 5000) break;
+  }
+  Mat            F = cp->F.get();
+  MatFactorError ferr;
+  PetscCall(MatFactorGetError(F, &ferr));
+  PetscCall(MatMumpsGetInfog(F, 28, &nullpivots));
+  PetscCheck(infog1 >= 0 || infog1 == -10, PETSC_COMM_SELF, PETSC_ERR_LIB, "Patch of part %" PetscInt_FMT " (%" PetscInt_FMT " nodes): MUMPS failed to factor its interior (INFOG(1) = %" PetscInt_FMT ")", p.id, p.nnodes(), infog1);
+  PetscCheck(ferr == MAT_FACTOR_NOERROR && nullpivots == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "Patch of part %" PetscInt_FMT " (%" PetscInt_FMT " nodes): its interior is singular (%" PetscInt_FMT " null pivots): some of it is held by no joint, seam or support (a mechanism, or a mesh island)", p.id, p.nnodes(), nullpivots);
+  {
+    Mat                S;
+    const PetscScalar *s;
+    PetscCall(MatFactorCreateSchurComplement(F, &S, nullptr));
+    PetscCall(MatDenseGetArrayRead(S, &s)); // column major; S is symmetric
+    for (PetscInt j = 0; j < cp->nb; ++j)
+      for (PetscInt i = 0; i < cp->nb; ++i) cp->S[(size_t)i * cp->nb + j] = s[(size_t)j * cp->nb + i];
+    PetscCall(MatDenseRestoreArrayRead(S, &s));
+    PetscCall(MatDestroy(&S));
+  }
+  PetscCall(MatMumpsSetIcntl(F, 26, 0)); // from now on MatSolve solves with K_II alone
+  // w0 and c.
+  bool loaded = false;
+  for (double v : rI) loaded = loaded || v != 0;
+  if (loaded) {
+    VecHandle b, x, y;
+    PetscCall(MatCreateVecs(K, x.out(), b.out()));
+    PetscCall(VecDuplicate(b.get(), y.out()));
+    PetscScalar *bb;
+    PetscCall(VecGetArray(b.get(), &bb));
+    for (PetscInt i = 0; i < n; ++i) bb[i] = i < cp->ni ? rI[i] : 0.0;
+    PetscCall(VecRestoreArray(b.get(), &bb));
+    PetscCall(MatSolve(F, b.get(), x.get()));
+    PetscScalar *xx;
+    PetscCall(VecGetArray(x.get(), &xx));
+    for (PetscInt i = 0; i < cp->ni; ++i) cp->w0[i] = xx[i];
+    for (PetscInt i = cp->ni; i < n; ++i) xx[i] = 0.0;
+    PetscCall(VecRestoreArray(x.get(), &xx));
+    PetscCall(MatMult(K, x.get(), y.get())); // K_BI w0 in the port rows
+    const PetscScalar *yy;
+    PetscCall(VecGetArrayRead(y.get(), &yy));
+    for (PetscInt b2 = 0; b2 < cp->nb; ++b2) cp->c[b2] += yy[cp->ni + b2];
+    PetscCall(VecRestoreArrayRead(y.get(), &yy));
+  }
+  PetscInt factor_mb = 0;
+  PetscCall(MatMumpsGetInfog(F, 22, &factor_mb)); // MB of MUMPS working memory at the factorisation
+  MatInfo kinfo;
+  PetscCall(MatGetInfo(K, MAT_LOCAL, &kinfo));
+  cp->bytes = 8.0 * (double)cp->S.size() + 1e6 * (double)factor_mb + kinfo.memory;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode RecoverPatch(const ShellPatch &p, const CondensedPatch &cp, PetscReal lambda, const PetscScalar *uB, std::vector<double> &u)
+{
+  PetscFunctionBeginUser;
+  const PetscInt nmesh = (PetscInt)p.mesh.x.size();
+  u.assign(6 * (size_t)p.nnodes(), 0.0);
+  for (size_t k = 0; k < p.carried.size(); ++k)
+    for (int c = 0; c < 6; ++c) u[6 * p.carried[k] + c] = uB[6 * k + c];
+  for (const auto &[d, v] : cp.prescribed) u[d] = lambda * v;
+  if (cp.ni > 0) {
+    // u_I = lambda w0 - K_II^-1 K_IB u_B
+    Mat       K = cp.K.get();
+    VecHandle x, y, z;
+    PetscCall(MatCreateVecs(K, x.out(), y.out()));
+    PetscCall(VecDuplicate(x.get(), z.out()));
+    PetscScalar *xx;
+    PetscCall(VecGetArray(x.get(), &xx));
+    for (PetscInt i = 0; i < cp.ni; ++i) xx[i] = 0.0;
+    for (PetscInt b = 0; b < cp.nb; ++b) xx[cp.ni + b] = uB[b];
+    PetscCall(VecRestoreArray(x.get(), &xx));
+    PetscCall(MatMult(K, x.get(), y.get()));
+    PetscCall(MatSolve(cp.F.get(), y.get(), z.get()));
+    const PetscScalar *zz;
+    PetscCall(VecGetArrayRead(z.get(), &zz));
+    for (PetscInt i = 0; i < cp.ni; ++i) u[cp.interior[i]] = lambda * cp.w0[i] - zz[i];
+    PetscCall(VecRestoreArrayRead(z.get(), &zz));
+  }
+  for (PetscInt nd = 0; nd < nmesh && !cp.slaves.master.empty(); ++nd) {
+    const PetscInt m = cp.slaves.master[nd];
+    if (m < 0) continue;
+    for (int i = 0; i < 6; ++i) {
+      double s = 0;
+      for (int j = 0; j < 6; ++j) s += cp.slaves.T[nd][6 * i + j] * u[6 * m + j];
+      u[6 * nd + i] = s;
+    }
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet

@@ -1,0 +1,69 @@
+// From the model the user described to the pieces the network carries: joints attached to their
+// parts (footprints), large parts cut into patches joined by seams, and the nodes each network
+// vertex carries (every node, or only the ports of a condensed patch). The vertex and edge records
+// here are the DMNetwork components: plain structs, copied as raw bytes when the network is
+// distributed (docs/architecture.md).
+#pragma once
+
+#include "model/model.hpp"
+#include "patch/patch.hpp"
+
+#include <map>
+#include <vector>
+
+namespace boltnet {
+
+// Vertex component.
+struct PatchComp {
+  PetscInt  id;     // user id of the part
+  PetscInt  index;  // position in the layout's patches
+  PetscInt  kind;   // PatchKind
+  PetscInt  nnodes; // nodes carried by the vertex (6 dof each)
+  PetscReal x[3];   // reference position of node 0
+};
+
+// Edge component of a joint. R holds the local frame rows (n, t1, t2).
+struct JointComp {
+  PetscInt  id;               // user id
+  PetscInt  index;            // position in the layout's joints (0..njoints-1)
+  PetscInt  patch_a, patch_b; // user ids of the two parts
+  PetscInt  va, vb;           // positions in the layout's patches of the two patches
+  PetscReal x[3];             // position of the fastener (where shell patches attach it)
+  PetscInt  node_a, node_b;   // the attachment nodes, numbered among the nodes their vertex carries
+  PetscInt  pnode_a, pnode_b; // the same, numbered in their patch (mesh nodes, then joint nodes)
+  PetscReal R[9];
+  Params    params;
+};
+
+// Edge component of a seam; the seam's elements are in the layout's `seams`.
+struct SeamComp {
+  PetscInt index; // position in the layout's seams
+  PetscInt part;  // user id of the part
+};
+
+struct LayoutOptions {
+  CouplingType coupling  = CouplingType::Exact;
+  double       radius    = 4.0; // footprint radius (mm)
+  double       reach     = 0;   // footprint reach along the fastener axis (mm); 0: 4 radius
+  long         max_nodes = 0;   // largest patch in nodes (0: no cut)
+  bool         condense  = false; // vertices carry the ports only
+};
+
+struct Layout {
+  std::vector<PatchComp>         patches;
+  std::vector<PetscInt>          part_of;   // position in the model's parts of each patch
+  std::map<PetscInt, ShellPatch> shells;    // the shell patches, by position in patches
+  std::vector<Seam>              seams;
+  std::vector<JointComp>         joints;    // in the model's order
+  std::map<PetscInt, QuadMesh>   cut_parts; // the whole meshes of the parts that were cut, by user id
+  PetscInt                       nparts = 0;
+};
+
+// Check the model and lay it out. The shell parts' meshes move from the model into the layout.
+// Errors name the joint, part, node or boundary condition at fault.
+PetscErrorCode LayoutCreate(MPI_Comm comm, Model &model, const LayoutOptions &o, Layout *L);
+
+// The edge list of the network: the joints (their patches' positions), then the seams.
+std::vector<PetscInt> LayoutEdgeList(const Layout &L);
+
+} // namespace boltnet

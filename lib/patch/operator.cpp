@@ -1,0 +1,143 @@
+// The patch operator (patch.hpp): the shell stiffness of a patch plus its footprint couplings.
+#include "patch/operator.hpp"
+#include "patch/rigid.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <tuple>
+
+namespace boltnet {
+
+const char *const kCouplingTypeNames[3] = {"penalty", "exact", "node"};
+
+SlaveMap ExactSlaves(const ShellPatch &p)
+{
+  const PetscInt nmesh = (PetscInt)p.mesh.x.size();
+  SlaveMap       s;
+  s.master.assign(nmesh, -1);
+  s.T.resize(nmesh);
+  for (size_t k = 0; k < p.joint_nodes.size(); ++k) {
+    const auto &jn = p.joint_nodes[k];
+    for (int n : jn.footprint) {
+      if (s.master[n] >= 0) throw std::logic_error("a footprint node is the slave of two joint nodes");
+      const std::array<double, 3> d = {p.mesh.x[n][0] - jn.x[0], p.mesh.x[n][1] - jn.x[1], p.mesh.x[n][2] - jn.x[2]};
+      const auto                  G = RigidLinkConstraint(d); // g = u_s - [I, -[d]x ...] u_m: T = -G_m
+      s.master[n]                   = nmesh + (PetscInt)k;
+      for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) s.T[n][6 * i + j] = -G[12 * i + 6 + j];
+    }
+  }
+  return s;
+}
+
+Triplets ShellTriplets(const ShellPatch &p)
+{
+  Triplets t;
+  t.reserve((p.mesh.quads.size() + p.shared.size()) * 576);
+  shell::ElementMatrix K;
+  for (const auto &q : p.mesh.quads) {
+    shell::Nodes X;
+    for (int k = 0; k < 4; ++k) X[k] = p.mesh.x[q[k]];
+    shell::ElementStiffness(X, p.material, p.drill, K);
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 6; ++i)
+        for (int b = 0; b < 4; ++b)
+          for (int j = 0; j < 6; ++j) t.emplace_back(6 * q[a] + i, 6 * q[b] + j, K[24 * (6 * a + i) + 6 * b + j]);
+  }
+  for (const auto &el : p.shared) { // the blocks between the patch's own nodes
+    shell::ElementStiffness(el.X, p.material, p.drill, K);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        if (el.node[a] < 0 || el.node[b] < 0) continue;
+        for (int i = 0; i < 6; ++i)
+          for (int j = 0; j < 6; ++j) t.emplace_back(6 * el.node[a] + i, 6 * el.node[b] + j, K[24 * (6 * a + i) + 6 * b + j]);
+      }
+  }
+  return t;
+}
+
+Triplets EliminateSlaves(const ShellPatch &p, const SlaveMap &s, const Triplets &t, bool constraint_rows)
+{
+  const PetscInt nmesh = (PetscInt)p.mesh.x.size();
+  // The scale of the constraint rows: the mean translational diagonal of K.
+  double diag = 0;
+  int    ndiag = 0;
+  for (const auto &[r, c, v] : t)
+    if (r == c && r % 6 < 3) diag += v, ndiag++;
+  const double scale = ndiag ? diag / ndiag : 1.0;
+
+  Triplets out;
+  out.reserve(t.size() * 2);
+  auto expand = [&](PetscInt i, auto &&f) { // dof i of u as a combination of the dof of v
+    const PetscInt node = i / 6, comp = i % 6;
+    if (node < nmesh && s.master[node] >= 0) {
+      for (int j = 0; j < 6; ++j)
+        if (s.T[node][6 * comp + j] != 0) f(6 * s.master[node] + j, s.T[node][6 * comp + j]);
+    } else f(i, 1.0);
+  };
+  for (const auto &[r, c, v] : t)
+    expand(r, [&](PetscInt R, double a) { expand(c, [&](PetscInt C, double b) { out.emplace_back(R, C, a * b * v); }); });
+  if (constraint_rows)
+    for (PetscInt node = 0; node < nmesh; ++node) {
+      if (s.master[node] < 0) continue;
+      for (int comp = 0; comp < 6; ++comp) {
+        const PetscInt i = 6 * node + comp;
+        out.emplace_back(i, i, scale);
+        for (int j = 0; j < 6; ++j)
+          if (s.T[node][6 * comp + j] != 0) out.emplace_back(i, 6 * s.master[node] + j, -scale * s.T[node][6 * comp + j]);
+      }
+    }
+  return out;
+}
+
+void AddPenaltyLinks(const ShellPatch &p, double penalty, double radius, Triplets &t)
+{
+  const PetscInt nmesh = (PetscInt)p.mesh.x.size();
+  for (size_t k = 0; k < p.joint_nodes.size(); ++k) {
+    const auto    &jn = p.joint_nodes[k];
+    const PetscInt m  = nmesh + (PetscInt)k;
+    for (int s : jn.footprint) {
+      const std::array<double, 3> d       = {p.mesh.x[s][0] - jn.x[0], p.mesh.x[s][1] - jn.x[1], p.mesh.x[s][2] - jn.x[2]};
+      const auto                  L       = RigidLinkPenalty(d, penalty, penalty * radius * radius);
+      const PetscInt              node[2] = {s, m};
+      for (int a = 0; a < 2; ++a)
+        for (int i = 0; i < 6; ++i)
+          for (int b = 0; b < 2; ++b)
+            for (int j = 0; j < 6; ++j) t.emplace_back(6 * node[a] + i, 6 * node[b] + j, L[12 * (6 * a + i) + 6 * b + j]);
+    }
+  }
+}
+
+Triplets PatchTriplets(const ShellPatch &p, CouplingType type, double penalty, double radius, bool constraint_rows)
+{
+  Triplets t = ShellTriplets(p);
+  if (type == CouplingType::Exact) t = EliminateSlaves(p, ExactSlaves(p), t, constraint_rows);
+  if (type == CouplingType::Penalty) AddPenaltyLinks(p, penalty, radius, t);
+  return t;
+}
+
+PatchOperator Compress(PetscInt n, Triplets &t)
+{
+  std::sort(t.begin(), t.end(), [](const auto &l, const auto &r) { return std::tie(std::get<0>(l), std::get<1>(l)) < std::tie(std::get<0>(r), std::get<1>(r)); });
+  PatchOperator op;
+  op.n = n;
+  op.rowptr.assign(op.n + 1, 0);
+  for (size_t i = 0; i < t.size();) {
+    const PetscInt r = std::get<0>(t[i]), c = std::get<1>(t[i]);
+    double         v = 0;
+    for (; i < t.size() && std::get<0>(t[i]) == r && std::get<1>(t[i]) == c; ++i) v += std::get<2>(t[i]);
+    op.cols.push_back(c);
+    op.vals.push_back(v);
+    op.rowptr[r + 1]++;
+  }
+  for (PetscInt r = 0; r < op.n; ++r) op.rowptr[r + 1] += op.rowptr[r];
+  return op;
+}
+
+PatchOperator BuildShellOperator(const ShellPatch &p, CouplingType type, double penalty, double radius)
+{
+  Triplets t = PatchTriplets(p, type, penalty, radius, true);
+  return Compress(6 * p.nnodes(), t);
+}
+
+} // namespace boltnet
