@@ -230,6 +230,7 @@ PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
   a->force_rows.clear();
   a->force_values.clear();
   std::map<PetscInt, PetscReal> dir, frc; // global row -> value (later entries override / add)
+  std::map<PetscInt, PetscInt>  frc_bc;   // global row -> the first force condition on it
   for (PetscInt v = a->vStart; v < a->vEnd; ++v) {
     PetscBool        ghost;
     const PatchComp *p;
@@ -260,8 +261,10 @@ PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
         for (PetscInt d = 0; d < kNodeDof; ++d) {
           if (bc.dof >= 0 && d != bc.dof) continue;
           const PetscInt row = goff + kNodeDof * n + d;
-          if (bc.kind == BOLTNET_BC_FORCE) frc[row] += bc.value / (PetscReal)total;
-          else dir[row] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
+          if (bc.kind == BOLTNET_BC_FORCE) {
+            frc[row] += bc.value / (PetscReal)total;
+            frc_bc.emplace(row, &bc - a->bcs.data());
+          } else dir[row] = bc.kind == BOLTNET_BC_FIXED ? 0.0 : bc.value;
         }
     }
   }
@@ -269,11 +272,17 @@ PetscErrorCode SetUpBoundaryRows(BoltnetAssembly a)
     a->dirichlet_rows.push_back(kv.first);
     a->dirichlet_values.push_back(kv.second);
   }
+  // A force on a prescribed dof would be absorbed by the support without a trace (a mistaken node
+  // set gave a converged run with zero displacement): an error naming the condition.
+  PetscInt bad = PETSC_MAX_INT, gbad;
   for (auto &kv : frc) {
-    if (dir.count(kv.first)) continue; // a prescribed dof takes no applied force
+    if (dir.count(kv.first)) bad = PetscMin(bad, frc_bc[kv.first]);
     a->force_rows.push_back(kv.first);
     a->force_values.push_back(kv.second);
   }
+  PetscCall(MPIU_Allreduce(&bad, &gbad, 1, MPIU_INT, MPI_MIN, a->comm));
+  PetscCheck(gbad == PETSC_MAX_INT, a->comm, PETSC_ERR_USER_INPUT, "The force on patch %" PetscInt_FMT " dof %s node set '%s' acts on dof that another boundary condition prescribes: the support would absorb it. Apply it to free dof (check the node set)",
+             a->bcs[gbad].patch, a->bcs[gbad].dof < 0 ? "all" : std::array<const char *, 6>{"ux", "uy", "uz", "rx", "ry", "rz"}[a->bcs[gbad].dof], a->bcs[gbad].set.empty() ? "(all nodes)" : a->bcs[gbad].set.c_str());
   PetscFunctionReturn(0);
 }
 
