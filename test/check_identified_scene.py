@@ -5,6 +5,7 @@ Checks that summary.json records the identified parameters, that they equal what
 prints for the same geometry (the same fastener given through the driver's -fastener_* options), and
 that the run follows the closed form of the frictional law with those parameters (check_fig3c.py).
 Usage: check_identified_scene.py summary.json joints.csv identify-output.txt check_fig3c.py
+       check_identified_scene.py summary.json joints.csv identify-output.txt check_hard.py force1d [check_hard options]
 """
 import json
 import re
@@ -20,4 +21,7 @@ for key in ["kn", "kt", "kc", "kg", "gap", "mu", "nf", "pretension"]:
         print(f"{key}: scene {a}, boltnet-identify {b}")
         sys.exit(1)
 print(f"identified: formula {bolt['formula']}, kc {bolt['kc']:.6g} N/mm, gap {bolt['gap']:.6g} mm, G {bolt['G']:.6g} N")
-sys.exit(subprocess.call([sys.executable, sys.argv[4], sys.argv[2], str(bolt["kt"]), str(bolt["kg"]), str(bolt["kc"]), str(bolt["gap"]), str(bolt["G"])]))
+law = [str(bolt["kt"]), str(bolt["kg"]), str(bolt["kc"]), str(bolt["gap"]), str(bolt["G"])]
+if len(sys.argv) > 5:  # check_hard.py MODE joints.csv law... options...
+    sys.exit(subprocess.call([sys.executable, sys.argv[4], sys.argv[5], sys.argv[2], *law, *sys.argv[6:]]))
+sys.exit(subprocess.call([sys.executable, sys.argv[4], sys.argv[2], *law]))

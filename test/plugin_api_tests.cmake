@@ -36,7 +36,7 @@ add_test(NAME foreign_snes_no_boltnet_dependency
 # shown by -snes_view; no option left unused. (PETSc 3.18 has no -snes_linesearch_view: the line
 # search is viewed inside -snes_view.)
 set(_foreign_ok
-  "type: boltnet\n *boltnet: alpha [^\n]*not attached[^\n]*\n *boltnet: watchdog full steps 0, steps limited to a state change 0, quadratic backtracks [1-9][0-9]*\n.*line search type boltnet\n.*foreign_snes: PASS\n.*There are no unused options.*\\[exit status 0\\]")
+  "type: boltnet\n *boltnet: alpha [^\n]*not attached[^\n]*\n *boltnet: watchdog full steps 0, steps limited to a state change 0, plateau steps lengthened 0, quadratic backtracks [1-9][0-9]*\n.*line search type boltnet\n.*foreign_snes: PASS\n.*There are no unused options.*\\[exit status 0\\]")
 foreach(ranks 1 2)
   boltnet_checked_mpi_test(foreign_snes_plugin ${ranks} "${_foreign_ok}"
     $<TARGET_FILE:foreign_snes> -dll_append $<TARGET_FILE:boltnet_snes>

@@ -163,7 +163,7 @@ void append(std::vector<Point> &a, const std::vector<Point> &b) { a.insert(a.end
 // *same_state reports whether every perturbed evaluation stayed in the state of the centre point.
 // extra_k adds extra_k d(slip)/d(du) to the in-plane rows: the tangent of a law whose slip
 // resistance is stiffer by extra_k, which is what the Jacobian's floor on kg is (kSlideFloor).
-Mat6 fdTangent(const Params &p, const History &h, const Vec6 &du, double step, bool *same_state, double extra_k = 0)
+Mat6 fdTangent(const Params &p, const History &h, const Vec6 &du, double step, bool *same_state, std::array<double, 4> extra_k = {0, 0, 0, 0})
 {
   const Response c = evaluate(p, h, du, Tangent::Consistent);
   Mat6           m{};
@@ -176,7 +176,8 @@ Mat6 fdTangent(const Params &p, const History &h, const Vec6 &du, double step, b
     const Response rd = evaluate(p, h, dn, Tangent::Consistent);
     if (ru.state != c.state || rd.state != c.state || ru.bearing != c.bearing || rd.bearing != c.bearing) *same_state = false;
     for (int i = 0; i < 6; ++i) m[6 * i + j] = (ru.force[i] - rd.force[i]) / (2 * step);
-    for (int i = 0; i < 2; ++i) m[6 * (1 + i) + j] += extra_k * (ru.trial.slip[i] - rd.trial.slip[i]) / (2 * step);
+    for (int i = 0; i < 2; ++i)
+      for (int k = 0; k < 2; ++k) m[6 * (1 + i) + j] += extra_k[2 * i + k] * (ru.trial.slip[k] - rd.trial.slip[k]) / (2 * step);
   }
   return m;
 }
@@ -187,9 +188,14 @@ void expectTangentMatchesFD(const Params &p, const History &h, const Vec6 &du, c
 {
   const double step = 1e-6; // mm: jumps are O(0.01..1) mm; truncation O(step^2), rounding O(eps F / step)
   bool         same = false;
-  // Below the floor (kg = 0: pure Coulomb) the tangent is that of kg = kSlideFloor ke.
-  const double extra = p.law == Law::Friction ? std::max(p.kg, kSlideFloor * p.kt) - p.kg : 0.0;
-  const Mat6   fd   = fdTangent(p, h, du, step, &same, extra);
+  // Pure Coulomb (kg = 0) while sliding: the tangent is that of a slip resistance stiffer by the
+  // floor (kSlideFloor ke inside the clearance, across the radius in bearing); kg > 0: its own.
+  const Response c     = evaluate(p, h, du, Tangent::Consistent);
+  const bool     slips = p.law == Law::Friction && c.state != State::Stick;
+  const Mat6     fd    = fdTangent(p, h, du, step, &same, slips ? slideFloorOf(p, c.trial, c.bearing) : std::array<double, 4>{0, 0, 0, 0});
+  if (slips && p.kg == 0 && !c.bearing) {
+    EXPECT_EQ(slideFloorOf(p, c.trial, c.bearing)[0], kSlideFloor * p.kt);
+  }
   ASSERT_TRUE(same) << what << ": sample point too close to a state switch";
   const Mat6 an = evaluate(p, h, du, Tangent::Consistent).tangent;
   for (int i = 0; i < 6; ++i)
@@ -274,7 +280,9 @@ std::vector<Params> frictionVariants()
   Params c         = b; // pure Coulomb sliding, bearing as stiff as sticking
   c.kg             = 0;
   c.kc             = c.kt;
-  return {a, b, c};
+  Params d         = b; // near-Coulomb: kg far below kSlideFloor ke is its own tangent
+  d.kg             = 1e-6 * d.kt;
+  return {a, b, c, d};
 }
 
 } // namespace
@@ -667,7 +675,7 @@ TEST(PaperTangent, SwitchedDefinitionInEveryState)
         const Response       rp = evaluate(p, s.h, s.du, Tangent::Paper);
         const Response       rc = evaluate(p, s.h, s.du, Tangent::Consistent);
         ASSERT_EQ(rp.state, target);
-        expectPaperTangent(p, rp.tangent, target == State::Stick ? p.kt : (target == State::Slide ? std::max(p.kg, kSlideFloor * p.kt) : p.kc), stateName(target));
+        expectPaperTangent(p, rp.tangent, target == State::Stick ? p.kt : (target == State::Slide ? (p.kg > 0 ? p.kg : kSlideFloor * p.kt) : p.kc), stateName(target));
         EXPECT_EQ(rp.force, rc.force);
         EXPECT_EQ(rp.trial.slip[0], rc.trial.slip[0]);
         EXPECT_EQ(rp.trial.slip[1], rc.trial.slip[1]);
@@ -834,6 +842,10 @@ TEST(FrozenJoint, AffineStickSpringBeyondTheThreshold)
   g0.pretension = 0;
   EXPECT_TRUE(std::isinf(utilization(g0, History{}, jumpOf(0, 1e-9, 0))));
   EXPECT_EQ(utilization(g0, History{}, jumpOf(0, 0, 0)), 0.0);
+  // A contact joint without clearance bears at every jump, at rest too: never an open spring.
+  Params c0 = contactParams();
+  c0.gap    = 0;
+  EXPECT_TRUE(std::isinf(utilization(c0, History{}, jumpOf(0, 0, 0))));
 }
 
 // Pure Coulomb (kg = 0): the force stays on the plateau G (the law), while the tangent along the
@@ -850,9 +862,63 @@ TEST(FrictionLaw, PureCoulombTangentFloor)
     EXPECT_TRUE(Near(K(c.tangent, 1, 1), kSlideFloor * p.kt, kClosed));
     EXPECT_TRUE(Near(K(q.tangent, 1, 1), kSlideFloor * p.kt, kClosed));
   }
+  // In bearing (1D, slip 3/8 > j) the radial stiffness is kc: no floor along x, Newton is exact there.
+  const Response b = evaluate(p, History{}, jumpOf(0, 0.5, 0), Tangent::Consistent);
+  EXPECT_EQ(b.state, State::Contact);
+  EXPECT_TRUE(Near(K(b.tangent, 1, 1), p.kc, kClosed));
+  // Across the slip (t2): G ke/a + (kc (r - j)/r + floor)(1 - G/a), a = ke du = 512, r = 3/8.
+  EXPECT_TRUE(Near(K(b.tangent, 2, 2), 128.0 * p.kt / 512.0 + (p.kc * (0.375 - 0.25) / 0.375 + kSlideFloor * p.kt) * (1 - 128.0 / 512.0), kClosed));
   const Params   d = dyadicFriction(); // kg = 64 > kSlideFloor ke: its own tangent
   const Response r = evaluate(d, History{}, jumpOf(0, 0.25, 0), Tangent::Consistent);
   EXPECT_TRUE(Near(K(r.tangent, 1, 1), d.kg, kClosed));
+}
+
+// 0 < kg < kSlideFloor ke: the tangent along the slip is kg itself in both tangents, and equals the
+// finite difference of the force (a stiffer floor made each Newton step kg / floor of the way to
+// the slide's solution (T - G)/kg + G/ke, and a slide with no bearing in reach did not converge).
+TEST(FrictionLaw, NearCoulombKeepsItsOwnTangent)
+{
+  Params p = dyadicFriction(); // G = 128, ke = 1024, j = 1/4
+  p.kg     = 1e-6 * p.kt;
+  for (double du : {0.25, -0.3}) {
+    const Vec6     j = jumpOf(0, du, 0);
+    const Response c = evaluate(p, History{}, j, Tangent::Consistent), q = evaluate(p, History{}, j, Tangent::Paper);
+    EXPECT_EQ(c.state, State::Slide);
+    EXPECT_EQ(K(c.tangent, 1, 1), p.kg);
+    EXPECT_EQ(K(q.tangent, 1, 1), p.kg);
+    bool       same = false;
+    const Mat6 fd   = fdTangent(p, History{}, j, 1e-6, &same);
+    ASSERT_TRUE(same);
+    EXPECT_TRUE(Near(K(fd, 1, 1), p.kg, 1e-3)); // the FD of the force itself (rounding ~3e-8), no floor added
+  }
+}
+
+// Contact law without clearance (gap = 0): F_t = kc du_t for every jump, at du_t = 0 too, state
+// contact; the tangent there is kc I (it was kt, zero for kt = 0: a singular Jacobian at rest), and
+// matches the central finite difference through du_t = 0 (offset 0: the circle is a point).
+TEST(ContactLaw, NoClearanceIsLinearThroughZero)
+{
+  Params p = contactParams();
+  p.gap    = 0;
+  p.kt     = 0;
+  for (double d : {0.0, 1e-9, -0.2}) {
+    const Vec6 j = jumpOf(0, d, 0.5 * d);
+    for (Tangent t : {Tangent::Consistent, Tangent::Paper}) {
+      const Response r = evaluate(p, History{}, j, t);
+      EXPECT_EQ(r.state, State::Contact);
+      EXPECT_TRUE(r.bearing);
+      EXPECT_TRUE(Near(r.force[1], p.kc * d, kClosed, p.kc));
+      EXPECT_TRUE(Near(r.force[2], p.kc * 0.5 * d, kClosed, p.kc));
+      EXPECT_TRUE(Near(K(r.tangent, 1, 1), p.kc, kClosed));
+      EXPECT_TRUE(Near(K(r.tangent, 2, 2), p.kc, kClosed));
+      EXPECT_TRUE(Near(K(r.tangent, 1, 2), 0.0, kClosed, p.kc));
+    }
+  }
+  bool       same = false;
+  const Mat6 fd   = fdTangent(p, History{}, jumpOf(0, 0, 0), 1e-6, &same);
+  ASSERT_TRUE(same);
+  EXPECT_TRUE(Near(K(fd, 1, 1), p.kc, kFD, p.kc));
+  EXPECT_TRUE(Near(K(fd, 2, 2), p.kc, kFD, p.kc));
 }
 
 // =============================================================================================

@@ -21,8 +21,17 @@ struct Bearing {
 Bearing bearing(double k, double j, double d0, double d1)
 {
   Bearing b;
+  if (j == 0.0) {
+    // No clearance: the bolt bears for every d, and the term is the linear k d, also at d = 0, where
+    // the formula below has no direction d/|d|. (Treating d = 0 as "not bearing" gave the contact
+    // law the tangent k = kt there, zero when kt = 0, while its force is kc du for every du.)
+    b.active = true;
+    b.force  = {k * d0, k * d1};
+    b.dforce = {k, 0, 0, k};
+    return b;
+  }
   const double r = std::hypot(d0, d1);
-  if (!(r > j) || r == 0.0) return b;
+  if (!(r > j)) return b;
   const double m[2] = {d0 / r, d1 / r};
   const double s    = (r - j) / r; // secant factor, in (0, 1]
   b.active          = true;
@@ -30,6 +39,20 @@ Bearing bearing(double k, double j, double d0, double d1)
   for (int a = 0; a < 2; ++a)
     for (int c = 0; c < 2; ++c) b.dforce[2 * a + c] = k * (m[a] * m[c] + s * ((a == c) - m[a] * m[c]));
   return b;
+}
+
+// The stiffness the consistent tangent adds to dh/dw for pure Coulomb (kg = 0) where h has none:
+// kSlideFloor ke in the whole plane inside the clearance; in bearing only across the radius
+// (sliding around the hole), since the radial kc is there. Zero for kg > 0. Public as slideFloorOf().
+Mat2 slideFloor(const Params &p, const Bearing &b, const double w[2])
+{
+  const double f = kSlideFloor * p.kt;
+  if (p.kg > 0) return {0, 0, 0, 0};
+  if (!b.active) return {f, 0, 0, f};
+  const double d0 = w[0] - p.offset[0], d1 = w[1] - p.offset[1], r = std::hypot(d0, d1);
+  if (r == 0) return {0, 0, 0, 0}; // gap = 0 at the centre: h = kc w is isotropic, kc I
+  const double m[2] = {d0 / r, d1 / r};
+  return {f * (1 - m[0] * m[0]), -f * m[0] * m[1], -f * m[1] * m[0], f * (1 - m[1] * m[1])};
 }
 
 void setInPlane(Mat6 &K, const Mat2 &T)
@@ -109,10 +132,14 @@ void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent
   r.state         = !slide ? State::Stick : (b.active ? State::Contact : State::Slide);
   r.trial.state   = static_cast<int>(r.state);
 
-  // The Jacobian only: at least kSlideFloor ke along the slip, so that pure Coulomb (kg = 0) does not
-  // make the tangent singular while the bolt slides across its clearance under a prescribed force.
-  // The force keeps kg: converged solutions do not change, only the Newton steps toward them.
-  const double kg_t = std::max(p.kg, kSlideFloor * ke);
+  // The Jacobian only: pure Coulomb (kg = 0) has no stiffness along the slip, and the tangent would be
+  // singular while the bolt slides across its clearance under a prescribed force; it takes
+  // kSlideFloor ke there. The force keeps kg = 0: converged solutions do not change, only the Newton
+  // steps toward them (the line search lengthens a step that stays on the flat plateau,
+  // docs/solver.md). Any kg > 0 is its own tangent: a stiffer floor would shorten every Newton step
+  // by kg / floor, and a slide with no bearing in reach would converge only linearly.
+  const double kg_t  = p.kg > 0 ? p.kg : kSlideFloor * ke;
+  const Mat2   floor = slideFloor(p, b, w);
   if (tangent == Tangent::Paper) {
     const double k = r.state == State::Stick ? ke : (r.state == State::Slide ? kg_t : p.kc);
     setInPlane(r.tangent, {k, 0, 0, k});
@@ -124,7 +151,7 @@ void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent
   }
   // Consistent tangent: dF/ddu_t = G ke/a P + Hw (I - G/a P), P = I - n n^T, Hw = dh/dw.
   const Mat2 P  = {1 - n[0] * n[0], -n[0] * n[1], -n[1] * n[0], 1 - n[1] * n[1]};
-  const Mat2 Hw = {kg_t + b.dforce[0], b.dforce[1], b.dforce[2], kg_t + b.dforce[3]};
+  const Mat2 Hw = {p.kg + floor[0] + b.dforce[0], floor[1] + b.dforce[1], floor[2] + b.dforce[2], p.kg + floor[3] + b.dforce[3]};
   Mat2       T{};
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j) {
@@ -138,6 +165,13 @@ void evaluateFriction(const Params &p, const History &h, const Vec6 &du, Tangent
 }
 
 } // namespace
+
+std::array<double, 4> slideFloorOf(const Params &p, const History &trial, bool bearing_active)
+{
+  Bearing b;
+  b.active = bearing_active;
+  return slideFloor(p, b, trial.slip);
+}
 
 double frictionThreshold(const Params &p, double normal_force)
 {
@@ -164,8 +198,9 @@ double utilization(const Params &p, const History &h, const Vec6 &du)
   switch (p.law) {
   case Law::Spring: return 0.0;
   case Law::Contact: {
+    // gap = 0: the bolt bears at every jump (F = kc du), the open spring kt du is the law nowhere.
     const double r = std::hypot(du[1] - p.offset[0], du[2] - p.offset[1]);
-    return p.gap > 0 ? r / p.gap : (r > 0 ? inf : 0.0);
+    return p.gap > 0 ? r / p.gap : inf;
   }
   case Law::Friction: {
     const double a = p.kt * std::hypot(du[1] - h.slip[0], du[2] - h.slip[1]);

@@ -55,9 +55,14 @@ struct Response {
   bool    bearing = false; // friction: the slip has closed the clearance (bolt bears on the hole)
 };
 
-// Smallest sliding stiffness in the tangent of the frictional law, as a fraction of ke: the
-// Jacobian's floor for kg = 0 (pure Coulomb); the force uses kg itself (docs/joint-laws.md).
+// Sliding stiffness in the tangent of the frictional law for kg = 0 (pure Coulomb), as a fraction of
+// ke: the Jacobian only, the force uses kg = 0 itself; any kg > 0 is its own tangent (docs/joint-laws.md).
 constexpr double kSlideFloor = 1e-3;
+
+// The stiffness (2x2, row major, joint plane) that the consistent tangent of the frictional law adds
+// to dh/dw when kg = 0, at a sliding point with this trial slip: kSlideFloor ke I inside the
+// clearance, kSlideFloor ke (I - m m^T) in bearing (m the radial direction), zero for kg > 0.
+std::array<double, 4> slideFloorOf(const Params &p, const History &trial, bool bearing);
 
 // Friction threshold G = mu nf max(0, Pc - phi F_n) for the given normal force.
 double frictionThreshold(const Params &p, double normal_force);
@@ -71,7 +76,8 @@ Response evaluate(const Params &p, const History &committed, const Vec6 &jump, T
 
 // How close the joint is, at this jump with this committed history, to leaving its linear state:
 // friction |ke (du_t - w)| / G (stick while <= 1), contact |du_t - offset| / gap (open while <= 1),
-// spring 0 (always linear). Infinity where the linear state has no room (G = 0 or gap = 0).
+// spring 0 (always linear). Infinity where the linear state has no room (G = 0 away from rest;
+// gap = 0 always: the contact law then bears at every jump, at rest too).
 double utilization(const Params &p, const History &committed, const Vec6 &jump);
 
 // Check the parameters; returns an empty string when valid, else a message naming the parameter.

@@ -125,6 +125,12 @@ struct _p_BoltnetAssembly {
   Vec       X         = nullptr; // converged solution
   PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
+  // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md): a converged step must balance
+  // to this fraction of its force scale; MUMPS pivots below null_pivot_threshold ||A|| are null.
+  PetscReal   equilibrium_rtol     = 1e-6;
+  PetscReal   null_pivot_threshold = 1e-12;
+  std::string singular; // the mechanism found by the last factorisation with null pivots ("" if none)
+  PetscReal   force_scale_seen = 0; // the largest force scale of the converged steps so far
   PetscReal lambda_target = 0; // load factor of the step being solved
   PetscReal lambda        = 0; // load factor of the last converged step
 
@@ -174,6 +180,23 @@ PetscErrorCode AssemblyPatchDisplacement(BoltnetAssembly a, const OwnedPatch &op
 
 // Solver (solver/*.cpp).
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);
+
+// Equilibrium at X for the load factor being solved (solver/equilibrium.cpp): the out-of-balance
+// force (2-norm over the free rows) against the force scale, the largest of the applied loads,
+// the reactions (the internal forces at the constrained rows) and the joint forces, here or at any
+// converged step before (unloaded to zero, the forces the structure carried set the round-off).
+struct Equilibrium {
+  PetscReal imbalance = 0, applied = 0, reactions = 0, joints = 0;
+  PetscReal scale = 0, ratio = 0; // ratio = imbalance / scale
+};
+PetscErrorCode AssemblyEquilibrium(BoltnetAssembly a, Vec X, Equilibrium *eq);
+std::string    DescribeEquilibrium(const Equilibrium &eq);
+// MUMPS null pivot detection (ICNTL(24), threshold CNTL(3)) on the SNES's factorisation; a no-op
+// for other solvers. Call after the solver is set up and after every PCReset.
+PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
+// After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->singular
+// names the mechanism (patches, dof, joints) from a null vector of the Jacobian.
+PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull);
 PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx);
 // After a failed solve: the joints that changed state most often during it, with their states.
 PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg);

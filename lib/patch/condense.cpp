@@ -4,8 +4,141 @@
 #include <petscmat.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace boltnet {
+
+namespace {
+
+// Eigenvalues and eigenvectors (columns of V) of a symmetric n x n matrix by cyclic Jacobi.
+void SymmetricEigen(int n, std::vector<double> A, std::vector<double> &w, std::vector<double> &V)
+{
+  V.assign((size_t)n * n, 0.0);
+  for (int i = 0; i < n; ++i) V[(size_t)i * n + i] = 1;
+  for (int sweep = 0; sweep < 60; ++sweep) {
+    double off = 0, diag = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) (i == j ? diag : off) += A[(size_t)i * n + j] * A[(size_t)i * n + j];
+    if (off <= 1e-30 * diag) break;
+    for (int p = 0; p < n; ++p)
+      for (int q = p + 1; q < n; ++q) {
+        const double apq = A[(size_t)p * n + q];
+        if (apq == 0) continue;
+        const double theta = (A[(size_t)q * n + q] - A[(size_t)p * n + p]) / (2 * apq);
+        const double t     = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+        for (int k = 0; k < n; ++k) { // A <- J^T A J
+          const double akp = A[(size_t)k * n + p], akq = A[(size_t)k * n + q];
+          A[(size_t)k * n + p] = c * akp - s * akq;
+          A[(size_t)k * n + q] = s * akp + c * akq;
+        }
+        for (int k = 0; k < n; ++k) {
+          const double apk = A[(size_t)p * n + k], aqk = A[(size_t)q * n + k];
+          A[(size_t)p * n + k] = c * apk - s * aqk;
+          A[(size_t)q * n + k] = s * apk + c * aqk;
+        }
+        for (int k = 0; k < n; ++k) {
+          const double vkp = V[(size_t)k * n + p], vkq = V[(size_t)k * n + q];
+          V[(size_t)k * n + p] = c * vkp - s * vkq;
+          V[(size_t)k * n + q] = s * vkp + c * vkq;
+        }
+      }
+  }
+  w.resize(n);
+  for (int i = 0; i < n; ++i) w[i] = A[(size_t)i * n + i];
+}
+
+} // namespace
+
+// The rigid-body motions a patch is free to make are exact null vectors of its Schur complement,
+// but the cancellation in K_BB - K_BI K_II^-1 K_IB leaves them a round-off stiffness. Where such a
+// motion is carried by a single port dof, the interface matrix then has a row of round-off that
+// MUMPS's scaling turns into an ordinary pivot, and a mechanism (that patch held by a joint with no
+// stiffness in that direction) goes undetected. For a patch that is a whole part, the free motions
+// are known from the geometry: the
+// rigid motions (t, w) that leave every prescribed dof inside the patch at zero. S is projected off
+// them (S <- P S P) and the entries left at round-off are set to zero, which restores the exact
+// null space.
+void ProjectFreeRigidMotions(const ShellPatch &p, CondensedPatch *cp)
+{
+  const PetscInt nb = cp->nb, nmesh = (PetscInt)p.mesh.x.size();
+  // A patch cut from a larger part holds only its share of the elements it shares with other
+  // patches (patch.hpp): those blocks alone resist a rigid motion of the patch, so its S has no
+  // such null vector; the mechanism, if any, shows only with the seams, in the interface matrix.
+  if (nb == 0 || !p.shared.empty()) return;
+  auto pos = [&](PetscInt node) { return node < nmesh ? p.mesh.x[node] : p.joint_nodes[node - nmesh].x; };
+  std::array<double, 3> c{0, 0, 0};
+  for (int n : p.carried)
+    for (int k = 0; k < 3; ++k) c[k] += pos(n)[k] / (double)p.carried.size();
+  double L = 0;
+  for (int n : p.carried)
+    for (int k = 0; k < 3; ++k) L = std::max(L, std::fabs(pos(n)[k] - c[k]));
+  if (L == 0) L = 1;
+  // The value of dof `comp` at point y under the rigid motion with parameters a (a[0..2]: the
+  // translation of c, a[3..5]: the rotation times L), as a row of 6 coefficients.
+  auto row = [&](const std::array<double, 3> &y, int comp, double r[6]) {
+    const double d[3] = {y[0] - c[0], y[1] - c[1], y[2] - c[2]};
+    for (int k = 0; k < 6; ++k) r[k] = 0;
+    if (comp >= 3) {
+      r[comp] = 1 / L;
+      return;
+    }
+    r[comp] = 1; // u = t + w x d
+    const int i = (comp + 1) % 3, j = (comp + 2) % 3;
+    r[3 + i] = d[j] / L; // (w x d)_comp = w_i d_j - w_j d_i
+    r[3 + j] = -d[i] / L;
+  };
+  std::vector<double> CtC(36, 0.0), w, V;
+  for (const auto &[dof, v] : cp->prescribed) {
+    double r[6];
+    row(pos(dof / 6), (int)(dof % 6), r);
+    for (int k = 0; k < 6; ++k)
+      for (int l = 0; l < 6; ++l) CtC[6 * k + l] += r[k] * r[l];
+  }
+  SymmetricEigen(6, CtC, w, V);
+  double wmax = 0;
+  for (double v : w) wmax = std::max(wmax, std::fabs(v));
+  std::vector<std::vector<double>> N; // the free motions on the ports, orthonormal
+  for (int k = 0; k < 6; ++k) {
+    if (std::fabs(w[k]) > 1e-10 * wmax && wmax > 0) continue;
+    std::vector<double> n(nb, 0.0);
+    for (size_t q = 0; q < p.carried.size(); ++q)
+      for (int comp = 0; comp < 6; ++comp) {
+        double r[6];
+        row(pos(p.carried[q]), comp, r);
+        for (int l = 0; l < 6; ++l) n[6 * q + comp] += r[l] * V[(size_t)l * 6 + k];
+      }
+    for (const auto &m : N) {
+      double dot = 0;
+      for (PetscInt i = 0; i < nb; ++i) dot += n[i] * m[i];
+      for (PetscInt i = 0; i < nb; ++i) n[i] -= dot * m[i];
+    }
+    double nrm = 0;
+    for (double v : n) nrm += v * v;
+    if (nrm < 1e-20) continue; // no trace on the ports (a rotation about a single port node's axis...)
+    for (double &v : n) v /= std::sqrt(nrm);
+    N.push_back(std::move(n));
+  }
+  if (N.empty()) return;
+  double smax = 0;
+  for (double v : cp->S) smax = std::max(smax, std::fabs(v));
+  // S <- (I - n n^T) S (I - n n^T) for each free motion n (orthonormal, so one after the other).
+  std::vector<double> Sn(nb);
+  for (const auto &n : N) {
+    for (PetscInt i = 0; i < nb; ++i) {
+      double s = 0;
+      for (PetscInt j = 0; j < nb; ++j) s += cp->S[(size_t)i * nb + j] * n[j];
+      Sn[i] = s;
+    }
+    double nSn = 0;
+    for (PetscInt i = 0; i < nb; ++i) nSn += n[i] * Sn[i];
+    for (PetscInt i = 0; i < nb; ++i)
+      for (PetscInt j = 0; j < nb; ++j) cp->S[(size_t)i * nb + j] += -Sn[i] * n[j] - n[i] * Sn[j] + nSn * n[i] * n[j];
+  }
+  for (double &v : cp->S)
+    if (std::fabs(v) < 1e-13 * smax) v = 0;
+  cp->free_motions = (PetscInt)N.size();
+}
 
 PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double penalty, double radius, const PatchLoads &loads, CondensedPatch *cp)
 {
@@ -114,6 +247,8 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
     PetscCall(MatDenseRestoreArrayRead(S, &s));
     PetscCall(MatDestroy(&S));
   }
+  ProjectFreeRigidMotions(p, cp);
+  PetscCall(PetscInfo(nullptr, "patch of part %" PetscInt_FMT ": %" PetscInt_FMT " interior and %" PetscInt_FMT " port dof, %" PetscInt_FMT " free rigid-body motions\n", p.id, cp->ni, cp->nb, cp->free_motions));
   PetscCall(MatMumpsSetIcntl(F, 26, 0)); // from now on MatSolve solves with K_II alone
   // w0 and c.
   bool loaded = false;

@@ -37,6 +37,7 @@ struct CondensedPatch {
   MatHandle             K;        // (ni + nb) x (ni + nb): interior rows first, then the ports
   MatHandle             F;        // its MUMPS factorisation, Schur complement on the ports
   PetscLogDouble        bytes = 0; // memory held: S, the factorisation (MUMPS INFOG(22)), K
+  PetscInt              free_motions = 0; // rigid-body motions no support in the patch holds
 };
 
 // Condense the patch (its operator with the given coupling, its loads). Errors name the patch: a

@@ -15,6 +15,12 @@
 //      step for the first point where a joint changes state and tries just past it: up to that point
 //      the model is smooth, so the step is safe, and the next Jacobian sees the new state;
 //   3. otherwise backtracks with the quadratic model of bt.
+// Before 0, a plateau: when the full step leaves ||F|| unchanged (to round-off) and no joint changes
+// state on it, the iterate sits on a flat stretch of the residual (a pure Coulomb joint sliding
+// across its clearance under a prescribed force: F = G whatever the slip). No decrease can be
+// measured there, and the Newton step (set by the tangent's floor, not by the residual) may end
+// short of the plateau's end. The step is doubled until a joint changes state, then bisected to
+// the first change and taken just past it, where the next Jacobian sees the new state (bearing).
 // Without a state function (any PETSc program loading the plugin) it is steps 1 and 3: a safeguarded
 // Armijo backtracking that keeps the contract of bt (pre/post-check, maxstep, Inf/NaN and domain
 // errors cut the step, failure reported as a line-search reason).
@@ -33,6 +39,7 @@ struct LineSearchBoltnet {
   PetscReal            alpha     = 1e-4; // sufficient decrease parameter
   PetscInt             bisections = 12;  // resolution of the search for the first state change: 2^-n
   PetscInt             watchdog  = 3;     // full steps allowed in a row without progress
+  PetscInt             extensions = 30;  // doublings of a step that stays on a plateau (2^30 ~ 1e9)
   PetscReal            growth    = 1e3;   // ... while ||F|| stays below growth * reference
   PetscInt             watch     = 0;     // steps taken since the reference point
   PetscReal            ref       = 0;     // ||F|| at the reference point
@@ -41,7 +48,11 @@ struct LineSearchBoltnet {
   PetscInt             kinkSteps = 0;     // statistics, shown by -snes_linesearch_view
   PetscInt             backtracks = 0;
   PetscInt             relaxed    = 0;    // full steps taken by the watchdog
+  PetscInt             extended   = 0;    // plateau steps lengthened to the next state change
 };
+
+// ||F|| unchanged by a step, to round-off: the residual is flat along it.
+bool Flat(PetscReal gnorm, PetscReal fnorm) { return std::isfinite(gnorm) && std::abs(gnorm - fnorm) <= 1e-10 * fnorm; }
 
 // F at W = X - lambda Y; returns gnorm = inf when F could not be evaluated there.
 PetscErrorCode TryStep(SNESLineSearch ls, SNES snes, Vec X, Vec Y, PetscReal lambda, Vec W, Vec G, PetscReal *gnorm)
@@ -105,6 +116,42 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
     if (gnorm * gnorm <= (1.0 - 2.0 * bn->alpha * lambda) * f2) {
       accepted = PETSC_TRUE;
       break;
+    }
+    if (it == 0 && bn->statefn && Flat(gnorm, fnorm)) { // a plateau: lengthen the step to the next state change
+      PetscInt n;
+      PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+      PetscReal lo = lambda, hi = lambda, g = gnorm;
+      for (PetscInt k = 0; n == 0 && Flat(g, fnorm) && k < bn->extensions && 2 * hi * ynorm <= maxstep; ++k) {
+        lo = hi;
+        hi *= 2;
+        PetscCall(TryStep(ls, snes, X, Y, hi, W, G, &g));
+        PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+      }
+      if (n > 0 && hi > lambda) { // the first state change lies in (lo, hi]: just past it
+        for (PetscInt k = 0; k < bn->bisections; ++k) {
+          const PetscReal mid = 0.5 * (lo + hi);
+          PetscCall(VecWAXPY(W, -mid, Y, X));
+          PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+          if (n > 0) hi = mid;
+          else lo = mid;
+        }
+        PetscCall(TryStep(ls, snes, X, Y, hi, W, G, &g));
+        if (std::isfinite(g) && g <= bn->growth * bn->ref) {
+          if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: ||F|| flat along the step; lengthened to the first joint state change, lambda %g, ||F|| %g\n", (double)hi, (double)g));
+          lambda   = hi;
+          gnorm    = g;
+          accepted = PETSC_TRUE;
+          bn->extended++;
+          break;
+        }
+      } else if (hi > lambda && g * g <= (1.0 - 2.0 * bn->alpha) * f2) { // the plateau ended without a state change
+        lambda   = hi;
+        gnorm    = g;
+        accepted = PETSC_TRUE;
+        bn->extended++;
+        break;
+      }
+      PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm)); // back to the full step for what follows
     }
     if (it == 0 && bn->statefn && bn->watch < bn->watchdog && std::isfinite(gnorm) && gnorm <= bn->growth * bn->ref) {
       accepted = PETSC_TRUE; // the watchdog's full step
@@ -180,11 +227,13 @@ PetscErrorCode SNESLineSearchSetFromOptions_Boltnet(SNESLineSearch ls, PetscOpti
   PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_alpha", "Sufficient decrease parameter of ||F||^2", "SNESLineSearchBoltnet", bn->alpha, &bn->alpha, nullptr));
   PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_watchdog", "With joint states: full Newton steps allowed in a row without decreasing ||F|| below the last reference point (0: monotone search)", "SNESLineSearchBoltnet", bn->watchdog, &bn->watchdog, nullptr));
   PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_growth", "The watchdog's full steps are taken while ||F|| stays below this multiple of the reference point's", "SNESLineSearchBoltnet", bn->growth, &bn->growth, nullptr));
+  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_extensions", "With joint states: doublings of a step along which ||F|| stays flat, looking for the next joint state change (0: none)", "SNESLineSearchBoltnet", bn->extensions, &bn->extensions, nullptr));
   PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_bisections", "Bisections that locate the first joint state change along the step (resolution 2^-n)", "SNESLineSearchBoltnet", bn->bisections, &bn->bisections, nullptr));
   PetscOptionsHeadEnd();
   PetscCheck(bn->alpha > 0 && bn->alpha < 0.5, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_alpha %g must lie in (0, 0.5)", (double)bn->alpha);
   PetscCheck(bn->watchdog >= 0, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_watchdog %" PetscInt_FMT " must be >= 0", bn->watchdog);
   PetscCheck(bn->growth >= 1, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_growth %g must be >= 1", (double)bn->growth);
+  PetscCheck(bn->extensions >= 0 && bn->extensions <= 60, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_extensions %" PetscInt_FMT " must lie in [0, 60]", bn->extensions);
   PetscCheck(bn->bisections >= 1 && bn->bisections <= 50, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_bisections %" PetscInt_FMT " must lie in [1, 50]", bn->bisections);
   PetscFunctionReturn(0);
 }
@@ -197,7 +246,7 @@ PetscErrorCode SNESLineSearchView_Boltnet(SNESLineSearch ls, PetscViewer viewer)
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii) {
     PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, watchdog %" PetscInt_FMT " steps below %g x reference, %" PetscInt_FMT " bisections, joint states %s\n", (double)bn->alpha, bn->watchdog, (double)bn->growth, bn->bisections, bn->statefn ? "attached" : "not attached (plain backtracking)"));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: watchdog full steps %" PetscInt_FMT ", steps limited to a state change %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->relaxed, bn->kinkSteps, bn->backtracks));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: watchdog full steps %" PetscInt_FMT ", steps limited to a state change %" PetscInt_FMT ", plateau steps lengthened %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->relaxed, bn->kinkSteps, bn->extended, bn->backtracks));
   }
   PetscFunctionReturn(0);
 }

@@ -1,0 +1,292 @@
+// Trusting "converged": equilibrium against the problem's own force scale, and singular Jacobians
+// (mechanisms) named by patch, dof and joint (docs/solver.md, "When is a step converged").
+#include "core/guard.hpp"
+#include "network/internal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <sstream>
+
+namespace boltnet {
+
+PetscErrorCode AssemblyEquilibrium(BoltnetAssembly a, Vec X, Equilibrium *eq)
+{
+  Vec                   F;
+  std::vector<Response> resp;
+  PetscReal             loc[4] = {0, 0, 0, 0}, glob[4];
+  PetscInt              rstart;
+  PetscFunctionBeginUser;
+  // The residual without the constrained rows: at a free row the out-of-balance force, at a
+  // constrained row the internal force there, i.e. the reaction. The rows are set aside for this one
+  // evaluation (AssemblyFormFunction replaces them by u - lambda u_bar).
+  std::vector<PetscInt> rows;
+  std::swap(rows, a->bc.dirichlet_rows);
+  PetscCall(VecDuplicate(X, &F));
+  PetscErrorCode ierr = AssemblyFormFunction(a->snes, X, F, a);
+  std::swap(rows, a->bc.dirichlet_rows);
+  PetscCall(ierr);
+  PetscCall(VecGetOwnershipRange(F, &rstart, nullptr));
+  const PetscScalar *f;
+  PetscCall(VecGetArrayRead(F, &f));
+  PetscInt n;
+  PetscCall(VecGetLocalSize(F, &n));
+  std::vector<char> fixed(n, 0);
+  for (PetscInt r : a->bc.dirichlet_rows) fixed[r - rstart] = 1;
+  for (PetscInt i = 0; i < n; ++i) loc[fixed[i] ? 1 : 0] += PetscRealPart(f[i] * f[i]);
+  PetscCall(VecRestoreArrayRead(F, &f));
+  PetscCall(VecDestroy(&F));
+  PetscCall(AssemblyEvaluateJoints(a, X, resp));
+  for (const Response &r : resp)
+    for (double v : r.force) loc[3] += v * v;
+  PetscCall(MPIU_Allreduce(loc, glob, 4, MPIU_REAL, MPIU_SUM, a->comm));
+  eq->imbalance = std::sqrt(glob[0]);
+  eq->reactions = std::sqrt(glob[1]);
+  eq->applied   = std::abs(a->lambda_target) * a->bc.fext_norm; // also the forces inside condensed patches
+  eq->joints    = std::sqrt(glob[3]);
+  eq->scale     = std::max({eq->reactions, eq->applied, eq->joints, a->force_scale_seen});
+  eq->ratio     = eq->scale > 0 ? eq->imbalance / eq->scale : (eq->imbalance > 0 ? PETSC_INFINITY : 0.0);
+  PetscFunctionReturn(0);
+}
+
+std::string DescribeEquilibrium(const Equilibrium &eq)
+{
+  std::ostringstream m;
+  m.precision(3);
+  m << "out-of-balance force " << eq.imbalance << " = " << eq.ratio << " of the force scale " << eq.scale << " (now: applied " << eq.applied << ", reactions " << eq.reactions << ", joint forces " << eq.joints << ")";
+  return m.str();
+}
+
+namespace {
+
+constexpr PetscInt kNodeDof                  = 6;
+const char *const  kDofName[kNodeDof]        = {"ux", "uy", "uz", "rx", "ry", "rz"};
+const char *const  kJumpName[kNodeDof]       = {"n", "t1", "t2", "rn", "rt1", "rt2"};
+constexpr double   kNullShare                = 1e-2; // a dof is part of the mechanism above this share of the largest
+
+// Every rank's text, in rank order, on every rank.
+PetscErrorCode AllgatherText(MPI_Comm comm, const std::string &mine, std::string &all)
+{
+  PetscMPIInt size, len = (PetscMPIInt)mine.size();
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<PetscMPIInt> lens(size), displs(size);
+  PetscCallMPI(MPI_Allgather(&len, 1, MPI_INT, lens.data(), 1, MPI_INT, comm));
+  PetscMPIInt total = 0;
+  for (PetscMPIInt i = 0; i < size; ++i) {
+    displs[i] = total;
+    total += lens[i];
+  }
+  all.assign(total, ' ');
+  PetscCallMPI(MPI_Allgatherv(mine.data(), len, MPI_CHAR, all.data(), lens.data(), displs.data(), MPI_CHAR, comm));
+  PetscFunctionReturn(0);
+}
+
+// Name the patches (with their moving dof and node count) and the joints (with the jump components
+// that open) of the null vector z: the mechanism the singular Jacobian admits.
+PetscErrorCode DescribeMechanism(BoltnetAssembly a, Vec z, std::string &msg)
+{
+  PetscReal          zmax;
+  PetscInt           rstart;
+  const PetscScalar *zz;
+  std::ostringstream patches, joints;
+  PetscFunctionBeginUser;
+  PetscCall(VecNorm(z, NORM_INFINITY, &zmax));
+  if (!(zmax > 0)) {
+    msg.clear();
+    PetscFunctionReturn(0);
+  }
+  PetscCall(VecGetOwnershipRange(z, &rstart, nullptr));
+  PetscCall(VecGetArrayRead(z, &zz));
+  for (const OwnedPatch &op : a->patches.owned) {
+    const PatchComp &p             = a->layout.patches[op.index];
+    bool             dof[kNodeDof] = {false};
+    PetscInt         nodes         = 0;
+    for (PetscInt nd = 0; nd < p.nnodes; ++nd) {
+      bool moves = false;
+      for (PetscInt d = 0; d < kNodeDof; ++d)
+        if (std::abs(PetscRealPart(zz[op.goff - rstart + kNodeDof * nd + d])) >= kNullShare * zmax) dof[d] = moves = true;
+      nodes += moves;
+    }
+    if (!nodes) continue;
+    PetscInt mask = 0;
+    for (PetscInt d = 0; d < kNodeDof; ++d) mask |= dof[d] ? (1 << d) : 0;
+    // A condensed shell patch carries its ports only: the null vector says which of its dof move,
+    // not how many of its nodes (-1 below).
+    const bool ports_only = a->opt.condense && op.shell;
+    patches << p.id << " " << mask << " " << (ports_only ? -1 : nodes) << "\n"; // merged over ranks and cut patches below
+  }
+  PetscCall(VecRestoreArrayRead(z, &zz));
+  // Joints: the jump of the mechanism across each local joint, in its frame.
+  Vec                zl;
+  const PetscScalar *x;
+  PetscCall(GetLocalX(a, z, &zl, &x));
+  const JointSet &jset = a->joints;
+  for (size_t k = 0; k < jset.size(); ++k) {
+    const JointComp &j = jset.comp[k];
+    std::string      open;
+    for (int blk = 0; blk < 2; ++blk)
+      for (int i = 0; i < 3; ++i) {
+        double s = 0;
+        for (int c = 0; c < 3; ++c) s += j.R[3 * i + c] * PetscRealPart(x[jset.ob[k] + 3 * blk + c] - x[jset.oa[k] + 3 * blk + c]);
+        if (std::abs(s) >= kNullShare * zmax) open += (open.empty() ? "" : ",") + std::string(kJumpName[3 * blk + i]);
+      }
+    if (!open.empty()) joints << "joint " << j.id << " (" << open << "); ";
+  }
+  PetscCall(RestoreLocalX(a, &zl, &x));
+  std::string all, ps, js;
+  PetscCall(AllgatherText(a->comm, patches.str(), all));
+  PetscCall(AllgatherText(a->comm, joints.str(), js));
+  std::map<PetscInt, std::pair<PetscInt, PetscInt>> moved; // part id -> (dof mask, nodes)
+  std::istringstream in(all);
+  for (PetscInt id, mask, nodes; in >> id >> mask >> nodes;) {
+    moved[id].first |= mask;
+    moved[id].second = (nodes < 0 || moved[id].second < 0) ? -1 : moved[id].second + nodes;
+  }
+  for (const auto &[id, mn] : moved) {
+    ps += "patch " + std::to_string(id) + " (";
+    for (PetscInt d = 0, first = 1; d < kNodeDof; ++d)
+      if (mn.first & (1 << d)) {
+        ps += std::string(first ? "" : ",") + kDofName[d];
+        first = 0;
+      }
+    ps += mn.second < 0 ? std::string("); ") : " of " + std::to_string(mn.second) + (mn.second == 1 ? " node" : " nodes") + "); ";
+  }
+  auto trim = [](std::string &s) {
+    while (!s.empty() && (s.back() == ' ' || s.back() == ';')) s.pop_back();
+  };
+  trim(ps);
+  trim(js);
+  msg = "it moves " + (ps.empty() ? std::string("no patch") : ps) + "; across " + (js.empty() ? std::string("no joint") : js);
+  PetscFunctionReturn(0);
+}
+
+// The Jacobian's null space, from MUMPS: the solve phase with ICNTL(25) = k returns its k-th basis
+// vector (MUMPS users' guide, ICNTL(25)); z gets the largest normalised |entry| over (up to 12) of them. MUMPS refuses that with a distributed solution
+// (INFOG(1) = -37), which PETSc uses on more than one rank, so the Jacobian is gathered to rank 0 and
+// factorised there once more: only after a failure, and the same vector on any number of ranks.
+PetscErrorCode NullVector(BoltnetAssembly a, Vec z, PetscBool *found)
+{
+  PetscInt    N, rstart, rend, nnull = 0;
+  IS          all;
+  Mat        *sub, F;
+  Vec         zs, bs;
+  VecScatter  toz;
+  PetscFunctionBeginUser;
+  PetscCall(MatGetSize(a->J, &N, nullptr));
+  PetscCall(MatGetOwnershipRange(a->J, &rstart, &rend));
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, a->rank == 0 ? N : 0, 0, 1, &all));
+  PetscCall(MatCreateSubMatrices(a->J, 1, &all, &all, MAT_INITIAL_MATRIX, &sub));
+  PetscCall(ISDestroy(&all));
+  PetscCall(VecScatterCreateToZero(z, &toz, &zs));
+  if (a->rank == 0) {
+    IS            rperm, cperm;
+    MatFactorInfo info;
+    PetscCall(MatGetFactor(sub[0], MATSOLVERMUMPS, MAT_FACTOR_LU, &F));
+    PetscCall(MatMumpsSetIcntl(F, 24, 1));
+    PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold));
+    PetscCall(MatGetOrdering(sub[0], MATORDERINGNATURAL, &rperm, &cperm));
+    PetscCall(MatFactorInfoInitialize(&info));
+    PetscCall(MatLUFactorSymbolic(F, sub[0], rperm, cperm, &info));
+    PetscCall(MatLUFactorNumeric(F, sub[0], &info));
+    PetscCall(MatMumpsGetInfog(F, 28, &nnull));
+    if (nnull > 0) { // |z| = the largest of the normalised |basis vectors|: every dof of every mode
+      Vec zk;
+      PetscCall(VecDuplicate(zs, &bs));
+      PetscCall(VecDuplicate(zs, &zk));
+      PetscCall(VecSet(bs, 0.0));
+      PetscCall(VecSet(zs, 0.0));
+      for (PetscInt k = 1; k <= PetscMin(nnull, 12); ++k) {
+        PetscReal m;
+        PetscCall(MatMumpsSetIcntl(F, 25, k));
+        PetscCall(MatSolve(F, bs, zk));
+        PetscCall(VecAbs(zk));
+        PetscCall(VecNorm(zk, NORM_INFINITY, &m));
+        if (m > 0) PetscCall(VecScale(zk, 1.0 / m));
+        PetscCall(VecPointwiseMax(zs, zs, zk));
+      }
+      PetscCall(VecDestroy(&zk));
+      PetscCall(VecDestroy(&bs));
+    }
+    PetscCall(ISDestroy(&rperm));
+    PetscCall(ISDestroy(&cperm));
+    PetscCall(MatDestroy(&F));
+  }
+  PetscCall(MatDestroySubMatrices(1, &sub));
+  PetscCallMPI(MPI_Bcast(&nnull, 1, MPIU_INT, 0, a->comm));
+  *found = nnull > 0 ? PETSC_TRUE : PETSC_FALSE;
+  if (*found) {
+    PetscCall(VecScatterBegin(toz, zs, z, INSERT_VALUES, SCATTER_REVERSE));
+    PetscCall(VecScatterEnd(toz, zs, z, INSERT_VALUES, SCATTER_REVERSE));
+  }
+  PetscCall(VecScatterDestroy(&toz));
+  PetscCall(VecDestroy(&zs));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
+{
+  KSP           ksp;
+  PC            pc;
+  PetscBool     lu;
+  Mat           F;
+  MatSolverType type;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCLU, &lu));
+  if (!lu) PetscFunctionReturn(0);
+  PetscCall(PCFactorGetMatSolverType(pc, &type));
+  if (!type || std::strcmp(type, MATSOLVERMUMPS)) PetscFunctionReturn(0);
+  PetscCall(KSPSetOperators(ksp, a->J, a->J));
+  PetscCall(PCFactorSetUpMatSolverType(pc));
+  PetscCall(PCFactorGetMatrix(pc, &F));
+  // Set before the first factorisation; -mat_mumps_icntl_24 / -mat_mumps_cntl_3 still override them.
+  PetscCall(MatMumpsSetIcntl(F, 24, 1));                   // null pivot row detection
+  PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold)); // null below this x ||A_pre|| (CNTL(3) > 0: relative)
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
+{
+  KSP           ksp;
+  PC            pc;
+  PetscBool     lu;
+  Mat           F;
+  MatSolverType type;
+  PetscInt      icntl24;
+  PetscFunctionBeginUser;
+  *nnull = 0;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCLU, &lu));
+  if (!lu) PetscFunctionReturn(0);
+  PetscCall(PCFactorGetMatSolverType(pc, &type));
+  if (!type || std::strcmp(type, MATSOLVERMUMPS)) PetscFunctionReturn(0);
+  PetscCall(PCFactorGetMatrix(pc, &F));
+  MatFactorType ftype;
+  PetscCall(MatGetFactorType(F, &ftype));
+  if (ftype == MAT_FACTOR_NONE) PetscFunctionReturn(0);
+  PetscCall(MatMumpsGetIcntl(F, 24, &icntl24));
+  if (icntl24 != 1) PetscFunctionReturn(0);
+  PetscCall(MatMumpsGetInfog(F, 28, nnull)); // INFOG(28): null pivots found by the last factorisation
+  if (!*nnull) PetscFunctionReturn(0);
+  Vec         z;
+  PetscBool   found;
+  std::string mech;
+  PetscCall(MatCreateVecs(a->J, &z, nullptr));
+  PetscCall(NullVector(a, z, &found));
+  if (found) PetscCall(DescribeMechanism(a, z, mech));
+  PetscCall(VecDestroy(&z));
+  std::ostringstream m;
+  m << "the Jacobian is singular: " << *nnull << " null pivot" << (*nnull > 1 ? "s" : "") << " (MUMPS INFOG(28), pivots below " << a->null_pivot_threshold
+    << " of the matrix norm, -load_null_pivot_threshold), a mechanism of the structure in its current joint states";
+  if (!mech.empty()) m << ": " << mech;
+  a->singular = m.str();
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet
