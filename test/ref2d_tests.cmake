@@ -62,6 +62,23 @@ boltnet_expect(ref2d_detects_a_changed_kg 1 --fail --match "FAIL: step .* joint"
   -- ${_ref2d_check} ${BOLTNET_OUT}/ref2d_net12_np1/joints.csv ${_ref2d_out}/net12.yaml -joint_f0_kg 879.45)
 set_tests_properties(ref2d_detects_a_changed_kg_np1 PROPERTIES FIXTURES_REQUIRED "ref2d_net12_np1;ref2d_scene_net12")
 
+# A state on a threshold is explained, never skipped: fig3c's load stops exactly at G and at -G
+# (robustness_tests.cmake), where |F_tr| = G and the reference finds the joint on the slip
+# threshold. Both say stick; with step 1's word doctored to slide the check passes and prints why,
+# with step 3's (load 0, F_tr = 0, far from any threshold) it fails.
+set(_thr ${BOLTNET_OUT}/hard_threshold_1_np1/joints.csv)
+set(_thr_opts ${BOLTNET_SCENES}/fig3c.yaml -load_table 3000,-3000,0 -load_steps 1)
+boltnet_expect(ref2d_threshold_same_state 1 --match "rows on a threshold: 2, of which 0"
+  -- ${_ref2d_check} ${_thr} ${_thr_opts})
+boltnet_expect(ref2d_threshold_explained 1 --match "threshold: step 1 joint 0: boltnet slide .*reference stick .*the joint sits on a threshold, \\|F_tr\\| - G = 0"
+  -- sh -c "sed 's/^1,\\([^,]*\\),0,stick,/1,\\1,0,slide,/' \"$0\" > \"$1\" && \"$2\" \"$3\" \"$1\" \"$4\" -load_table 3000,-3000,0 -load_steps 1"
+  ${_thr} ${BOLTNET_OUT}/hard_threshold_1_np1/doctored-step1.csv ${BOLTNET_PYTHON} ${_ref2d}/check_network.py ${BOLTNET_SCENES}/fig3c.yaml)
+boltnet_expect(ref2d_state_off_threshold_fails 1 --fail --match "FAIL: step 3 joint 0: boltnet slide .*away from any threshold"
+  -- sh -c "sed 's/^3,\\([^,]*\\),0,stick,/3,\\1,0,slide,/' \"$0\" > \"$1\" && \"$2\" \"$3\" \"$1\" \"$4\" -load_table 3000,-3000,0 -load_steps 1"
+  ${_thr} ${BOLTNET_OUT}/hard_threshold_1_np1/doctored-step3.csv ${BOLTNET_PYTHON} ${_ref2d}/check_network.py ${BOLTNET_SCENES}/fig3c.yaml)
+set_tests_properties(ref2d_threshold_same_state_np1 ref2d_threshold_explained_np1 ref2d_state_off_threshold_fails_np1
+  PROPERTIES FIXTURES_REQUIRED hard_threshold_1_np1)
+
 # The shipped test scene chain (9 joints of the three laws, 2D loading and reversal) against the
 # reference, from the runs test/CMakeLists.txt already makes on 1, 2 and 3 ranks.
 foreach(ranks 1 2 3)
