@@ -18,7 +18,7 @@ plane; for a rigid plate both are exact statics and kinematics):
 (a) elastic, identical springs kt (and a rotational stiffness kr per joint): the plate translates and
     rotates about the group's centroid, F_i = P/n + T kt (e_z x r_i) / (kt sum r^2 + n kr),
     T the load's moment about the centroid (the elastic centroid method: direct shear plus torsion,
-    e.g. Salmon & Johnson, Steel Structures, sect. 4.12; with kr = 0 it is the classic form);
+    the "elastic method" of the AISC Steel Construction Manual, Part 7; with kr = 0 its usual form);
 (b) ultimate, every fastener sliding at the same threshold G (pure Coulomb: kg = kc = 0): the plate
     rotates about an instantaneous centre (IC) and each fastener carries G perpendicular to its ray
     from the IC; the IC and P_u follow from the three equilibrium equations (Crawford & Kulak,
