@@ -18,10 +18,10 @@ add_test(NAME ref2d_bolt_group_closed_forms COMMAND ${BOLTNET_PYTHON} ${_ref2d}/
 # standards: independent of the rank count). Each scene is written at test time from its seed; boltnet
 # runs it on 1, 2 and 3 ranks and every row of joints.csv (jumps, forces, slips, states) is compared
 # with the reference at 1e-8 of each quantity's scale: the bound of boltnet's round-off stop with
-# kr = 1e9 (check_network.py explains it; measured at most 6.6e-9). --min-turn 30: the scene must turn
+# kr = 1e9 (check_network.py explains it; measured at most 5.6e-9 over 24 scenes). --min-turn 30: the scene must turn
 # some joint's slip by 30 degrees or more between sliding steps (the 2D law is exercised).
-#   net12, net2: 3D (tilted bolt axes, clamp coupling, offsets), 21 and 7 slip turns over 10 degrees;
-#   net8-planar: every axis z, boltnet's out-of-plane jump and force must stay zero (55 turns);
+#   net12, net2: 3D (tilted bolt axes, clamp coupling, offsets), 10 slip turns over 10 degrees each;
+#   net8-planar: every axis z, boltnet's out-of-plane jump and force must stay zero (59 turns);
 #   net4: 3D with a cut-back in the path (the reference takes boltnet's steps), few turns.
 # ref2d_network(NAME SEED [GENERATE args...] [CHECK args...]): scene net<NAME> from make_scene.py
 # SEED GENERATE..., run on 1, 2 and 3 ranks, each compared by check_network.py CHECK...
@@ -45,7 +45,7 @@ ref2d_network(4 4)
 
 # The same network solved to round-off: kr = 1e5 (rotations are decoupled from the compared
 # quantities on rigid patches, and boltnet's round-off stop scales with the largest row of J, kr's)
-# and -snes_rtol 1e-14. The model then agrees to 1e-10 (measured 4.2e-13), on 1 and 3 ranks.
+# and -snes_rtol 1e-14. The model then agrees to 1e-10 (measured 3.5e-13), on 1 and 3 ranks.
 add_test(NAME ref2d_make_net12_kr COMMAND ${BOLTNET_PYTHON} ${_ref2d}/make_scene.py 12 ${_ref2d_out} --kr 1e5)
 set_tests_properties(ref2d_make_net12_kr PROPERTIES FIXTURES_SETUP ref2d_scene_net12_kr)
 foreach(ranks 1 3)
@@ -57,7 +57,7 @@ foreach(ranks 1 3)
 endforeach()
 
 # The comparison can fail: the reference given one joint type's kg 1% higher than boltnet's differs by
-# 4.6e-5 of the force scale, and the check says so.
+# 3.9e-5 of the force scale, and the check says so.
 boltnet_expect(ref2d_detects_a_changed_kg 1 --fail --match "FAIL: step .* joint" --match "failures \\(tolerance 1e-08"
   -- ${_ref2d_check} ${BOLTNET_OUT}/ref2d_net12_np1/joints.csv ${_ref2d_out}/net12.yaml -joint_f0_kg 879.45)
 set_tests_properties(ref2d_detects_a_changed_kg_np1 PROPERTIES FIXTURES_REQUIRED "ref2d_net12_np1;ref2d_scene_net12")

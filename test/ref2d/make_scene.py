@@ -15,8 +15,10 @@ The scene, fixed by the seed (numpy's PCG64 stream):
   the z axis (so in-plane loads open or close joints and, with clamp coupling, change G);
 - loads: a force on a patch L and a prescribed in-plane displacement, at 60 to 120 degrees to it,
   on a patch D joined to L by one more frictional joint; a second force on a third patch if there
-  is one (forces with a small out-of-plane part without --planar); the load factor goes
-  1, -0.8, 0.6, -0.3, 0 (loading, unloading, reversal, reloading), 8 steps per segment.
+  is one (forces with a small out-of-plane part without --planar);
+- the load path: the load factor goes to 1, then through 2 to 4 reversals of random size (each
+  0.5 to 1 times the square root of the previous extreme: loading, unloading, reversal,
+  reloading), back to 0, in 6 to 10 steps per segment.
   The driver scales every boundary condition by one load factor, so a load's direction can only
   reverse; the slip directions turn because the joint L-D saturates (slides, bears) while the force
   on L keeps growing, and because joints slide and bear one after the other around the loops
@@ -96,11 +98,19 @@ def make(seed, planar, kr=None):
     d = rng.uniform(1.5, 2.5) * max(t.get("gap", 0) for t in types.values())
     b = a + rng.choice([-1, 1]) * rng.uniform(np.pi / 3, 2 * np.pi / 3)
     bcs += [(D, "ux", "displacement", d * np.cos(b)), (D, "uy", "displacement", d * np.sin(b))]
-    return pos, types, joints, bcs
+    # The load path, drawn last (the network above does not depend on it): up to 1, then 2 to 4
+    # reversals, each 0.5 to 1 times the square root of the previous extreme, back to 0; 6 to 10
+    # steps per segment.
+    table = [1.0]
+    for k in range(int(rng.integers(2, 5))):
+        table.append((-1) ** (k + 1) * rng.uniform(0.5, 1.0) * abs(table[-1]) ** 0.5)
+    table.append(0.0)
+    steps = int(rng.integers(6, 11))
+    return pos, types, joints, bcs, table, steps
 
 
 def write(seed, outdir, planar, kr=None):
-    pos, types, joints, bcs = make(seed, planar, kr)
+    pos, types, joints, bcs, table, steps = make(seed, planar, kr)
     name = f"net{seed}" + ("-planar" if planar else "") + (f"-kr{kr:g}" if kr is not None else "")
     os.makedirs(outdir, exist_ok=True)
     g = lambda v: repr(float(v))  # noqa: E731  every digit, so that both solvers read the same numbers
@@ -128,7 +138,7 @@ def write(seed, outdir, planar, kr=None):
             f.write(f"  {t}:\n")
             for k, v in params.items():
                 f.write(f"    {k}: {v if isinstance(v, str) else g(v)}\n")
-        f.write("load:\n  path: table\n  table: 1,-0.8,0.6,-0.3,0\n  steps: 8\n")
+        f.write(f"load:\n  path: table\n  table: {','.join(f'{v:.6g}' for v in table)}\n  steps: {steps}\n")
     return os.path.join(outdir, name + ".yaml")
 
 
