@@ -98,7 +98,7 @@ set_tests_properties(ref2d_group_scenes PROPERTIES FIXTURES_SETUP ref2d_group_sc
 
 # (a) Elastic, identical springs, on shell plates of E = 7.2e7 and 7.2e8 MPa: the plate's compliance
 # is an error in 1/E (measured 2.28e-4, 2.29e-5: ratio 9.99); the Richardson extrapolation to a rigid
-# plate gives the elastic centroid method to 2.4e-8 (tolerance 1e-7: the O(1/E^2) remainder is 5e-9,
+# plate gives the elastic centroid method to 2.7e-8 (tolerance 1e-7: the O(1/E^2) remainder is 5e-9,
 # from the pair 7.2e6/7.2e7, and the stiffer plate's solve loses ~1e-8 to its conditioning).
 foreach(E E1 E2)
   boltnet_run(ref2d_group_${E} 1 ${_ref2d_out}/${E}/group-shell-force.yaml)
@@ -127,8 +127,8 @@ add_test(NAME ref2d_group_ic_method_np2 COMMAND ${_group} plateau ${BOLTNET_OUT}
 set_tests_properties(ref2d_group_ic_method_np2 PROPERTIES FIXTURES_REQUIRED ref2d_group_plateau_np2)
 
 # The same group on a RIGID plate: exact closed forms, but expected to fail until rigid patches honour
-# the joint's position. Today a joint on a rigid patch acts at the patch's node (lib/network/api.cpp,
-# BoltnetAssemblyAddJointAt: node_a = node_b = 0, x stored but unused for rigid patches), so every
+# the joint's position. Today a joint on a rigid patch acts at the patch's node (lib/patch/layout.cpp:
+# "a rigid patch: its node 0"; the position BoltnetAssemblyAddJointAt stores is unused there), so every
 # fastener gets P/n and no torsion (measured: difference 1.0 of the largest force; plateau 6 G against
 # 0.948 G). The change it waits for: on a rigid patch with reference point X, a joint with a position
 # x acts at x as a rigid-body slave of the patch's node, u_end = u + theta x (x - X), theta_end =
