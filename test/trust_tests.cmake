@@ -16,11 +16,11 @@ endforeach()
 
 # A mechanism: fig3a with the contact law and kc = 0 carries at most k j = 450 N (beyond the clearance
 # the force stays k j). It used to "converge" at 500 N with a jump of -3e7 mm and the force of the
-# wrong sign. Now MUMPS finds the null pivot, the steps are cut back to 450 N exactly (the closed
-# form's limit: the last step that converges starts there), and the run stops naming the mechanism:
-# plate 1 sliding in x across joint 0's t1; the same on 1, 2 and 3 ranks.
+# wrong sign. Now MUMPS finds the null pivot, the steps are cut back towards 450 N (the closed form's
+# limit: the last step that converges starts at or within 2^-8 of a step below it), and the run
+# stops naming the mechanism: plate 1 sliding in x across joint 0's t1; the same on 1, 2 and 3 ranks.
 foreach(ranks 1 2 3)
-  boltnet_expect(trust_mechanism_named ${ranks} --fail --match "FAILED: Load step [0-9]+ from load factor 450 to"
+  boltnet_expect(trust_mechanism_named ${ranks} --fail --match "FAILED: Load step [0-9]+ from load factor 4(49\\.[0-9]+|50) to"
     --match "the Jacobian is singular: 1 null pivot .* it moves patch 1 \\(ux( of 190 nodes)?\\). across joint 0 \\(t1\\)"
     -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3a.yaml
     -output_dir ${BOLTNET_OUT}/trust_mechanism_np${ranks} -joint_bolt_kc 0)

@@ -450,7 +450,7 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
       const FirstJoint fj = {id, pa, pb, {n[0], n[1], n[2]}, {t[0], t[1], t[2]}, {pos[0], pos[1], pos[2]}};
       PetscCall(JointTypeFromOptions(comm, a, type, fj, &types[type], scene));
     }
-    PetscCall(BoltnetAssemblyAddJointAt(a, id, pa, pb, &types[type], n, t, pos));
+    PetscCall(BoltnetAssemblyAddJointAt(a, id, pa, pb, &types[type], n, t, HasColumn(joints, "x") ? pos : nullptr));
   }
   const std::map<std::string, PetscInt> dofs = {{"ux", 0}, {"uy", 1}, {"uz", 2}, {"rx", 3}, {"ry", 4}, {"rz", 5}, {"all", -1}};
   const std::map<std::string, BoltnetBCKind> kinds = {{"fixed", BOLTNET_BC_FIXED}, {"displacement", BOLTNET_BC_DISPLACEMENT}, {"force", BOLTNET_BC_FORCE}};

@@ -2,6 +2,36 @@
 
 namespace boltnet {
 
+Vec6 AttachmentDof(const PetscReal d[3], const PetscScalar *u)
+{
+  Vec6 a;
+  for (int i = 0; i < 6; ++i) a[i] = u[i];
+  a[0] += u[4] * d[2] - u[5] * d[1];
+  a[1] += u[5] * d[0] - u[3] * d[2];
+  a[2] += u[3] * d[1] - u[4] * d[0];
+  return a;
+}
+
+Mat6 AttachmentMap(const PetscReal d[3])
+{
+  Mat6 T{};
+  for (int i = 0; i < 6; ++i) T[6 * i + i] = 1;
+  // theta x d = -[d]x theta
+  T[6 * 0 + 4] = d[2], T[6 * 0 + 5] = -d[1];
+  T[6 * 1 + 3] = -d[2], T[6 * 1 + 5] = d[0];
+  T[6 * 2 + 3] = d[1], T[6 * 2 + 4] = -d[0];
+  return T;
+}
+
+Vec6 NodeLoad(const PetscReal d[3], const Vec6 &f)
+{
+  Vec6 g = f;
+  g[3] += d[1] * f[2] - d[2] * f[1];
+  g[4] += d[2] * f[0] - d[0] * f[2];
+  g[5] += d[0] * f[1] - d[1] * f[0];
+  return g;
+}
+
 Vec6 LocalJump(const PetscReal R[9], const PetscScalar *ua, const PetscScalar *ub)
 {
   Vec6 du{};
@@ -54,7 +84,8 @@ void EvaluateJoints(const JointSet &js, const PetscScalar *x, Tangent tangent, b
   if (jumps) jumps->resize(js.size());
   const bool any_frozen = !full_law && js.frozen.size() == js.size();
   for (size_t i = 0; i < js.size(); ++i) {
-    const Vec6 du = LocalJump(js.comp[i].R, x + js.oa[i], x + js.ob[i]);
+    const Vec6 ua = AttachmentDof(js.comp[i].da, x + js.oa[i]), ub = AttachmentDof(js.comp[i].db, x + js.ob[i]);
+    const Vec6 du = LocalJump(js.comp[i].R, ua.data(), ub.data());
     out[i]        = evaluate(js.comp[i].params, js.committed[i], du, tangent, any_frozen && js.frozen[i]);
     if (jumps) (*jumps)[i] = du;
   }

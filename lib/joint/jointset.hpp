@@ -45,6 +45,12 @@ struct JointSet {
   size_t size() const { return comp.size(); }
 };
 
+// The dof of a joint's attachment point at offset d from its node (a rigid patch's node):
+// u + theta x d, theta. T is that map as a 6 x 6 matrix (row major).
+Vec6 AttachmentDof(const PetscReal d[3], const PetscScalar *u);
+Mat6 AttachmentMap(const PetscReal d[3]);
+// A force and moment f at the attachment point as the load on the node: T^T f = (f, m + d x f).
+Vec6 NodeLoad(const PetscReal d[3], const Vec6 &f);
 // Jump in the local frame: du = Q (u_b - u_a), Q = diag(R, R).
 Vec6 LocalJump(const PetscReal R[9], const PetscScalar *ua, const PetscScalar *ub);
 // Global force on node b: Q^T f.

@@ -66,6 +66,7 @@ PetscErrorCode BoltnetAssemblyAddJointAt(BoltnetAssembly a, PetscInt id, PetscIn
   j.part_a = patch_a;
   j.part_b = patch_b;
   for (int k = 0; k < 3; ++k) j.x[k] = x ? x[k] : 0.0;
+  j.positioned = x != nullptr;
   Params &p           = j.params;
   PetscCheck(bp->law >= BOLTNET_LAW_SPRING && bp->law <= BOLTNET_LAW_FRICTION, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": unknown law %d", id, (int)bp->law);
   p.law            = static_cast<Law>(bp->law);

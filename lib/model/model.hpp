@@ -37,6 +37,7 @@ struct JointDesc {
   std::array<double, 3> x;              // fastener position (where it attaches to shell parts)
   std::array<double, 9> R;              // local frame rows (n, t1, t2)
   Params                params;
+  bool                  positioned = false; // x was given: on a rigid patch the joint acts there
 };
 
 struct BCDesc {

@@ -27,6 +27,7 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   if (!a || !*a) PetscFunctionReturn(0);
   PetscCall(SNESDestroy(&(*a)->snes));
   PetscCall(MatDestroy(&(*a)->J));
+  PetscCall(MatDestroy(&(*a)->Jabs));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(DMDestroy(&(*a)->net.dm));
   PetscCallMPI(MPI_Comm_free(&(*a)->comm));

@@ -125,6 +125,7 @@ struct _p_BoltnetAssembly {
   Vec       X         = nullptr; // converged solution
   PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
+  Mat       Jabs      = nullptr;     // |J_ij| of the last Jacobian: the round-off of each row of K u
   // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md): a converged step must balance
   // to this fraction of its force scale; MUMPS pivots below null_pivot_threshold ||A|| are null.
   PetscReal   equilibrium_rtol     = 1e-6;

@@ -23,7 +23,10 @@ struct JointDof {
 std::array<double, 3> AttachmentPoint(BoltnetAssembly a, const JointComp &j, PetscInt pos, PetscInt node)
 {
   auto sh = a->layout.shells.find(pos);
-  if (sh == a->layout.shells.end()) return {a->layout.patches[pos].x[0], a->layout.patches[pos].x[1], a->layout.patches[pos].x[2]};
+  if (sh == a->layout.shells.end()) { // a rigid patch: its node, or where the joint acts on it
+    const PetscReal *d = pos == j.va ? j.da : j.db;
+    return {a->layout.patches[pos].x[0] + d[0], a->layout.patches[pos].x[1] + d[1], a->layout.patches[pos].x[2] + d[2]};
+  }
   const QuadMesh &m = sh->second.mesh;
   if (node < (PetscInt)m.x.size()) return m.x[node]; // attached to a mesh node (-coupling_type node)
   const ShellPatch::JointNode &jn = sh->second.joint_nodes.at(node - (PetscInt)m.x.size());

@@ -146,6 +146,33 @@ PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// Jabs = |P| entry by entry: row i of |P| |x| bounds the terms summed in row i of K u, so that
+// 100 eps (|P| |x|)_i is the round-off of that row of the residual (solver/stepper.cpp).
+PetscErrorCode AbsoluteEntries(BoltnetAssembly a, Mat P)
+{
+  PetscBool   mpi;
+  Mat         parts[2];
+  PetscInt    nparts = 1;
+  PetscFunctionBeginUser;
+  if (!a->Jabs) PetscCall(MatDuplicate(P, MAT_COPY_VALUES, &a->Jabs));
+  else PetscCall(MatCopy(P, a->Jabs, SAME_NONZERO_PATTERN));
+  PetscCall(PetscObjectTypeCompare((PetscObject)a->Jabs, MATMPIAIJ, &mpi));
+  if (mpi) {
+    const PetscInt *colmap;
+    PetscCall(MatMPIAIJGetSeqAIJ(a->Jabs, &parts[0], &parts[1], &colmap));
+    nparts = 2;
+  } else parts[0] = a->Jabs;
+  for (PetscInt k = 0; k < nparts; ++k) {
+    PetscScalar *v;
+    MatInfo      info;
+    PetscCall(MatGetInfo(parts[k], MAT_LOCAL, &info));
+    PetscCall(MatSeqAIJGetArray(parts[k], &v));
+    for (PetscInt i = 0; i < (PetscInt)info.nz_used; ++i) v[i] = PetscAbsScalar(v[i]);
+    PetscCall(MatSeqAIJRestoreArray(parts[k], &v));
+  }
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 // The Jacobian's nonzero pattern, counted exactly with MATPREALLOCATOR: each joint couples the 6
@@ -224,10 +251,16 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
       for (int b = 1; b < 3; ++b)
         if (std::fabs(T[6 * a + b]) <= 1e-13 * tmax) T[6 * a + b] = 0;
     const Mat6 K = GlobalTangent(js.comp[k].R, T);
+    // In the dof of the two nodes: Ta^T K Ta, -Ta^T K Tb; -Tb^T K Ta, Tb^T K Tb (jointset.hpp).
+    const Mat6 Ta = AttachmentMap(js.comp[k].da), Tb = AttachmentMap(js.comp[k].db);
     for (int i = 0; i < 12; ++i)
       for (int j = 0; j < 12; ++j) {
+        const Mat6  &Ti = i < 6 ? Ta : Tb, &Tj = j < 6 ? Ta : Tb;
         const double sign = ((i < 6) == (j < 6)) ? 1.0 : -1.0;
-        vals[12 * i + j]  = sign * K[6 * (i % 6) + (j % 6)];
+        double       v    = 0;
+        for (int p = 0; p < 6; ++p)
+          for (int q = 0; q < 6; ++q) v += Ti[6 * p + (i % 6)] * K[6 * p + q] * Tj[6 * q + (j % 6)];
+        vals[12 * i + j] = sign * v;
       }
     PetscCall(MatSetValues(P, 12, js.rows[k].data(), 12, js.rows[k].data(), vals, ADD_VALUES));
   }
@@ -237,6 +270,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatZeroRows(P, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
   PetscCall(MatNorm(P, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
+  PetscCall(AbsoluteEntries(a, P));
   ++js.jac_assembled;
   js.jac_valid = (P == a->J) ? PETSC_TRUE : PETSC_FALSE;
   js.jac_tangent.resize(resp.size());

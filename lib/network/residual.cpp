@@ -72,9 +72,10 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   const JointSet &js = a->joints;
   for (size_t k = 0; k < js.size(); ++k) {
     const Vec6 g = GlobalForce(js.comp[k].R, resp[k].force);
+    const Vec6 gb = NodeLoad(js.comp[k].db, g), ga = NodeLoad(js.comp[k].da, g);
     for (int i = 0; i < 6; ++i) {
-      f[js.ob[k] + i] += g[i];
-      f[js.oa[k] + i] -= g[i];
+      f[js.ob[k] + i] += gb[i];
+      f[js.oa[k] + i] -= ga[i];
     }
   }
   for (const auto &[e, Ks] : a->patches.seam_ops) { // the owned seams: the blocks between their two sides

@@ -322,6 +322,11 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     j.params                    = d.params;
     std::tie(j.va, j.pnode_a)   = nodemap[m.Find(d.part_a)][jnode[2 * ji]];
     std::tie(j.vb, j.pnode_b)   = nodemap[m.Find(d.part_b)][jnode[2 * ji + 1]];
+    for (int side = 0; side < 2; ++side) {
+      const PartDesc &part = m.parts[m.Find(side ? d.part_b : d.part_a)];
+      PetscReal      *off  = side ? j.db : j.da;
+      for (int k = 0; k < 3; ++k) off[k] = (part.kind == PatchKind::Rigid && d.positioned) ? d.x[k] - part.x[k] : 0.0;
+    }
     L->joints.push_back(j);
   }
   Carry(L, o.condense);

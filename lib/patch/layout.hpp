@@ -31,6 +31,10 @@ struct JointComp {
   PetscReal x[3];             // position of the fastener (where shell patches attach it)
   PetscInt  node_a, node_b;   // the attachment nodes, numbered among the nodes their vertex carries
   PetscInt  pnode_a, pnode_b; // the same, numbered in their patch (mesh nodes, then joint nodes)
+  // On a rigid patch, where the joint acts relative to the patch's node (its position minus the
+  // node's, zero for a joint given no position): the attachment point follows the node as a rigid
+  // body, u + theta x d (docs/joint-laws.md, "Where a joint acts").
+  PetscReal da[3], db[3];
   PetscReal R[9];
   Params    params;
 };

@@ -124,12 +124,13 @@ PetscErrorCode DescribeMechanism(BoltnetAssembly a, Vec z, std::string &msg)
   PetscCall(GetLocalX(a, z, &zl, &x));
   const JointSet &jset = a->joints;
   for (size_t k = 0; k < jset.size(); ++k) {
-    const JointComp &j = jset.comp[k];
+    const JointComp &j  = jset.comp[k];
+    const Vec6       ua = AttachmentDof(j.da, x + jset.oa[k]), ub = AttachmentDof(j.db, x + jset.ob[k]);
     std::string      open;
     for (int blk = 0; blk < 2; ++blk)
       for (int i = 0; i < 3; ++i) {
         double s = 0;
-        for (int c = 0; c < 3; ++c) s += j.R[3 * i + c] * PetscRealPart(x[jset.ob[k] + 3 * blk + c] - x[jset.oa[k] + 3 * blk + c]);
+        for (int c = 0; c < 3; ++c) s += j.R[3 * i + c] * PetscRealPart(ub[3 * blk + c] - ua[3 * blk + c]);
         if (std::abs(s) >= kNullShare * zmax) open += (open.empty() ? "" : ",") + std::string(kJumpName[3 * blk + i]);
       }
     if (!open.empty()) joints << "joint " << j.id << " (" << open << "); ";
