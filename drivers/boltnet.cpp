@@ -14,16 +14,28 @@ step; open fields.xdmf in ParaView: docs/output.md).\n\
 Options on the command line override the scene file. With -options_left, an option that nothing\n\
 used is an error.\n\n";
 
+#include "core/errors.hpp"
 #include "io/io.hpp"
+#include "io/limits.hpp"
 #include "solver/loadpath.hpp"
 
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <regex>
 #include <string>
 
 using namespace boltnet;
 
 namespace {
 
-PetscErrorCode Run(int *exitcode)
+// How long a rank that stopped on an error waits for the others to stop too (seconds). Checks of
+// input are collective (every rank raises the same error at the same point) and the ranks then end
+// cleanly; an error raised on one rank alone leaves the others waiting in a collective call, and
+// only MPI_Abort can end them.
+constexpr double kErrorAgreeSeconds = 10;
+
+PetscErrorCode Run(int *exitcode, ErrorLog *log)
 {
   MPI_Comm        comm = PETSC_COMM_WORLD;
   char            file[PETSC_MAX_PATH_LEN] = "", outdir[PETSC_MAX_PATH_LEN] = "";
@@ -50,17 +62,32 @@ PetscErrorCode Run(int *exitcode)
   }
   PetscCheck(hasScene, comm, PETSC_ERR_USER_INPUT, "No scene: give -scene <file.yaml> (e.g. -scene share/scenes/fig3c.yaml); -help lists the options");
   PetscCall(SceneInsertOptionsFile(comm, file, &scene));
+  PetscCall(SceneCheckOptionValues(comm));
 
   // Everything is read and checked before anything is written.
   PetscCall(BoltnetAssemblyCreate(comm, &a));
   PetscCall(SceneDescribeAssembly(comm, &scene, a));
   PetscCall(LoadPathFromOptions(comm, nullptr, &path));
+  {
+    const std::int64_t segments = std::max<std::int64_t>(1, (std::int64_t)path.breakpoints.size());
+    PetscCheck(segments * path.steps_per_segment <= limits::kMaxLoadSteps, comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT " over %lld segment(s) of the load path is more than the limit of %lld steps (docs/scenes.md, \"Limits\")", path.steps_per_segment, (long long)segments, (long long)limits::kMaxLoadSteps);
+  }
   PetscCall(BoltnetAssemblySetFromOptions(a));
   PetscCall(BoltnetAssemblySetUp(a));
   PetscCall(SceneCheckUnusedOptions(comm));
   if (helpOnly) {
     PetscCall(BoltnetAssemblyDestroy(&a));
     PetscFunctionReturn(0);
+  }
+  // With -options_left, an option nothing has used by now (except those PETSc reads only during or
+  // after a solve) stops the run before anything is written.
+  if (optionsLeft) {
+    PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_TRUE, exitcode));
+    if (*exitcode) {
+      PetscCall(PetscOptionsClearValue(nullptr, "-options_left")); // said above: PETSc's list would repeat it
+      PetscCall(BoltnetAssemblyDestroy(&a));
+      PetscFunctionReturn(0);
+    }
   }
 
   const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
@@ -70,12 +97,21 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)\n", scene.name.c_str(), a->nparts, a->patches.size(), a->seams.size(), a->joints.size(), a->ndof_global, a->size, (double)a->dof_imbalance));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
-  // program exits non-zero.
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
-  PetscErrorCode ierr = BoltnetAssemblySolveLoadPath(a, (PetscInt)path.breakpoints.size(), path.breakpoints.data(), path.steps_per_segment);
-  PetscCall(PetscPopErrorHandler());
+  // program exits 3. Any other error (a file that cannot be written, a library failure) goes up
+  // with its own message and leaves no summary.json: OutputOpen removed the last run's.
+  log->messages.clear();
+  PetscErrorCode ierr;
+  try {
+    ierr = BoltnetAssemblySolveLoadPath(a, (PetscInt)path.breakpoints.size(), path.breakpoints.data(), path.steps_per_segment);
+  } catch (const std::bad_alloc &) {
+    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory during the load path");
+  }
+  if (ierr && a->failure.empty()) {
+    const std::string why = ErrorText(*log);
+    SETERRQ(comm, ierr, "The load path stopped at load factor %g: %s", (double)a->lambda, why.empty() ? "PETSc error" : why.c_str());
+  }
+  log->messages.clear();
   if (ierr) {
-    PetscCheck(!a->failure.empty(), comm, ierr == PETSC_ERR_NOT_CONVERGED ? PETSC_ERR_NOT_CONVERGED : PETSC_ERR_LIB, "The load path failed (error %d)", (int)ierr);
     PetscCall(PetscPrintf(comm, "boltnet: FAILED: %s\n", a->failure.c_str()));
     PetscCall(OutputSummary(a, &out, "failed", a->failure));
     *exitcode = 3;
@@ -88,19 +124,82 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(OutputClose(&out));
   PetscCall(BoltnetAssemblyDestroy(&a));
 
-  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet", exitcode)); // an error, not a warning
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_FALSE, exitcode)); // an error, not a warning
   PetscFunctionReturn(0);
+}
+
+// The message of the error: PETSc's first message and its outermost context (core/errors.hpp);
+// PETSc's complaint about an option's value ("Input string abc has no numeric value") names the
+// option(s) with that value.
+std::string Describe(const ErrorLog &log)
+{
+  std::string msg = ErrorText(log);
+  if (msg.empty()) msg = "unknown error";
+  try {
+    std::smatch m;
+    static const std::regex value("Input string (.*) has no (integer|numeric) value|Unknown logical value: (.*)");
+    if (std::regex_search(msg, m, value)) {
+      std::string names;
+      if (!OptionsWithValue(m[1].matched ? m[1].str() : m[3].str(), &names) && !names.empty()) msg = "option " + names + ": " + msg;
+    }
+  } catch (...) {
+  }
+  return msg;
+}
+
+// One line on rank 0 and a clean exit on every rank when every rank stopped on the error; the
+// message of each rank that did and MPI_Abort otherwise (kErrorAgreeSeconds).
+int Fail(MPI_Comm agree, const ErrorLog &log)
+{
+  const std::string msg = Describe(log);
+  int               rank = 0, done = 0;
+  MPI_Request       req;
+  MPI_Comm_rank(agree, &rank);
+  MPI_Ibarrier(agree, &req);
+  const double t0 = MPI_Wtime();
+  while (!done && MPI_Wtime() - t0 < kErrorAgreeSeconds) {
+    MPI_Test(&req, &done, MPI_STATUS_IGNORE);
+    if (!done) PetscSleep(0.01);
+  }
+  if (!done) {
+    std::fprintf(stderr, "boltnet: error (rank %d): %s\n", rank, msg.c_str());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
+  if (rank == 0) std::fprintf(stderr, "boltnet: error: %s\n", msg.c_str());
+  // Nothing more to say: no list of options left unused by a run that stopped.
+  PetscOptionsClearValue(nullptr, "-options_left");
+  MPI_Comm_free(&agree);
+  PetscPopErrorHandler();
+  PetscFinalize();
+  return 1;
 }
 
 } // namespace
 
 int main(int argc, char **argv)
 {
-  int exitcode = 0;
-  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
-  // An error returns from main at once with PETSc's message (mpiexec then ends every rank), so an
-  // error raised on one rank alone cannot leave the others waiting.
-  PetscCall(Run(&exitcode));
-  PetscCall(PetscFinalize());
+  int      exitcode = 0;
+  ErrorLog log;
+  MPI_Comm agree = MPI_COMM_NULL;
+  if (PetscInitialize(&argc, &argv, nullptr, help)) return 1;
+  // Errors are collected, not printed as PETSc's traceback (one line instead of about forty);
+  // Fail() prints the message.
+  if (PetscPushErrorHandler(CaptureErrorHandler, &log) || MPI_Comm_dup(PETSC_COMM_WORLD, &agree)) return 1;
+  PetscErrorCode ierr;
+  try {
+    ierr = Run(&exitcode, &log);
+  } catch (const std::bad_alloc &) {
+    log.messages.push_back("Out of memory");
+    ierr = PETSC_ERR_MEM;
+  } catch (const std::exception &e) {
+    log.messages.push_back(std::string("C++ exception: ") + e.what());
+    ierr = PETSC_ERR_LIB;
+  }
+  if (ierr) return Fail(agree, log);
+  MPI_Comm_free(&agree);
+  PetscPopErrorHandler();
+  if (PetscFinalize()) return 1;
   return exitcode;
 }

@@ -164,7 +164,7 @@ PetscErrorCode Run(int *exitcode)
   }
   if (hasCurve) PetscCall(CurveMode(comm, file, jointType));
   else PetscCall(GeometryMode(comm, jointType));
-  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet-identify", exitcode)); // an error, not a warning
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet-identify", PETSC_FALSE, exitcode)); // an error, not a warning
   PetscFunctionReturn(0);
 }
 

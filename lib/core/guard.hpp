@@ -3,6 +3,7 @@
 #pragma once
 #include <petscsys.h>
 #include <exception>
+#include <new>
 
 namespace boltnet {
 
@@ -11,6 +12,8 @@ PetscErrorCode Guard(MPI_Comm comm, F &&body)
 {
   try {
     return body();
+  } catch (const std::bad_alloc &) {
+    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory (a C++ allocation in boltnet failed)");
   } catch (const std::exception &e) {
     SETERRQ(comm, PETSC_ERR_LIB, "C++ exception in boltnet: %s", e.what());
   } catch (...) {
