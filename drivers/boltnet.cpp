@@ -121,7 +121,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     if (out.most_joint >= 0)
       PetscCall(PetscPrintf(comm, "boltnet: most loaded joint %" PetscInt_FMT ": in-plane force %g at step %" PetscInt_FMT " (load %g)\n", out.most_joint, (double)out.most_force, out.most_step, (double)out.most_load));
   }
-  PetscCall(OutputClose(&out));
+  PetscCall(OutputClose(comm, &out));
   PetscCall(BoltnetAssemblyDestroy(&a));
 
   if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_FALSE, exitcode)); // an error, not a warning

@@ -66,7 +66,11 @@ struct Output {
 PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out);
 PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
 PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
-PetscErrorCode OutputClose(Output *out);
+// Collective: rank 0's error closing joints.csv is every rank's.
+PetscErrorCode OutputClose(MPI_Comm comm, Output *out);
+// Rank 0: `text` into `path` through `path`.tmp, checked at every step, then renamed; on failure
+// the temporary file is removed and the message (file and reason) returned; "" on success.
+std::string WriteFileWhole(const std::string &path, const std::string &text);
 
 // Read a whole text file on rank 0 and broadcast it; a missing or unreadable file is an error
 // naming `what` and the path.
