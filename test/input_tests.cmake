@@ -79,3 +79,18 @@ set_tests_properties(full_disk_summary_np2 full_disk_fields_np2 PROPERTIES PROCE
 # An HDF5 write error through PETSc's viewer: fields.h5 cannot be created (a directory is in the way).
 boltnet_expect(fields_h5_error 1 --fail --max-lines 2 --match "Cannot write the fields of step 1 in .*fields.h5 .*H5Fcreate"
   -- sh -c "rm -rf \"$1\" && mkdir -p \"$1/fields.h5/x\" && \"$0\" -scene \"$2\" -output_dir \"$1\" -load_steps 2" $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/h5_dir ${BOLTNET_SCENES}/fig3a.yaml)
+
+# Fuzz regressions (docs/fuzzing.md): every input kept under test/data/fuzz/<target>/ (inputs a fuzzer
+# crashed on, and inputs that broke the parsers before they were hardened) through the fuzz target's
+# own checks, without libFuzzer; scripts/sanitize runs them with the sanitizers.
+set(_fuzz_sources_table ${PROJECT_SOURCE_DIR}/lib/io/table.cpp)
+set(_fuzz_sources_gmsh ${PROJECT_SOURCE_DIR}/lib/mesh/gmsh.cpp)
+set(_fuzz_sources_scene ${PROJECT_SOURCE_DIR}/lib/io/scene_yaml.cpp)
+foreach(target table gmsh scene)
+  add_executable(fuzz_replay_${target} fuzz/replay.cpp fuzz/fuzz_${target}.cpp ${_fuzz_sources_${target}})
+  target_include_directories(fuzz_replay_${target} PRIVATE ${PROJECT_SOURCE_DIR}/lib)
+  target_link_libraries(fuzz_replay_${target} PRIVATE yaml PkgConfig::PETSC MPI::MPI_C)
+  file(GLOB _inputs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/data/fuzz/${target}/*)
+  add_test(NAME fuzz_regressions_${target} COMMAND fuzz_replay_${target} ${_inputs})
+  set_tests_properties(fuzz_regressions_${target} PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" PASS_REGULAR_EXPRESSION "replay: [1-9][0-9]* input\\(s\\) ran without a crash")
+endforeach()
