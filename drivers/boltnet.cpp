@@ -22,7 +22,6 @@ used is an error.\n\n";
 #include <cstdio>
 #include <exception>
 #include <new>
-#include <regex>
 #include <string>
 
 using namespace boltnet;
@@ -136,12 +135,13 @@ std::string Describe(const ErrorLog &log)
   std::string msg = ErrorText(log);
   if (msg.empty()) msg = "unknown error";
   try {
-    std::smatch m;
-    static const std::regex value("Input string (.*) has no (integer|numeric) value|Unknown logical value: (.*)");
-    if (std::regex_search(msg, m, value)) {
-      std::string names;
-      if (!OptionsWithValue(m[1].matched ? m[1].str() : m[3].str(), &names) && !names.empty()) msg = "option " + names + ": " + msg;
-    }
+    // PETSc 3.18's words for a value it cannot convert (PetscOptionsStringToInt, _ToReal, _ToBool).
+    std::string value;
+    const size_t a = msg.find("Input string "), b = msg.find(" has no "), c = msg.find("Unknown logical value: ");
+    if (a != std::string::npos && b != std::string::npos && b > a) value = msg.substr(a + 13, b - a - 13);
+    else if (c != std::string::npos) value = msg.substr(c + 23);
+    std::string names;
+    if (!value.empty() && !OptionsWithValue(value, &names) && !names.empty()) msg = "option " + names + ": " + msg;
   } catch (...) {
   }
   return msg;
