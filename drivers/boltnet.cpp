@@ -14,25 +14,17 @@ step; open fields.xdmf in ParaView: docs/output.md).\n\
 Options on the command line override the scene file. With -options_left, an option that nothing\n\
 used is an error.\n\n";
 
-#include "core/errors.hpp"
+#include "driver.hpp"
 #include "io/io.hpp"
 #include "io/limits.hpp"
 #include "solver/loadpath.hpp"
 
-#include <cstdio>
-#include <exception>
 #include <new>
 #include <string>
 
 using namespace boltnet;
 
 namespace {
-
-// How long a rank that stopped on an error waits for the others to stop too (seconds). Checks of
-// input are collective (every rank raises the same error at the same point) and the ranks then end
-// cleanly; an error raised on one rank alone leaves the others waiting in a collective call, and
-// only MPI_Abort can end them.
-constexpr double kErrorAgreeSeconds = 10;
 
 PetscErrorCode Run(int *exitcode, ErrorLog *log)
 {
@@ -127,79 +119,9 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscFunctionReturn(0);
 }
 
-// The message of the error: PETSc's first message and its outermost context (core/errors.hpp);
-// PETSc's complaint about an option's value ("Input string abc has no numeric value") names the
-// option(s) with that value.
-std::string Describe(const ErrorLog &log)
-{
-  std::string msg = ErrorText(log);
-  if (msg.empty()) msg = "unknown error";
-  try {
-    // PETSc 3.18's words for a value it cannot convert (PetscOptionsStringToInt, _ToReal, _ToBool).
-    std::string value;
-    const size_t a = msg.find("Input string "), b = msg.find(" has no "), c = msg.find("Unknown logical value: ");
-    if (a != std::string::npos && b != std::string::npos && b > a) value = msg.substr(a + 13, b - a - 13);
-    else if (c != std::string::npos) value = msg.substr(c + 23);
-    std::string names;
-    if (!value.empty() && !OptionsWithValue(value, &names) && !names.empty()) msg = "option " + names + ": " + msg;
-  } catch (...) {
-  }
-  return msg;
-}
-
-// One line on rank 0 and a clean exit on every rank when every rank stopped on the error; the
-// message of each rank that did and MPI_Abort otherwise (kErrorAgreeSeconds).
-int Fail(MPI_Comm agree, const ErrorLog &log)
-{
-  const std::string msg = Describe(log);
-  int               rank = 0, done = 0;
-  MPI_Request       req;
-  MPI_Comm_rank(agree, &rank);
-  MPI_Ibarrier(agree, &req);
-  const double t0 = MPI_Wtime();
-  while (!done && MPI_Wtime() - t0 < kErrorAgreeSeconds) {
-    MPI_Test(&req, &done, MPI_STATUS_IGNORE);
-    if (!done) PetscSleep(0.01);
-  }
-  if (!done) {
-    std::fprintf(stderr, "boltnet: error (rank %d): %s\n", rank, msg.c_str());
-    std::fflush(stderr);
-    MPI_Abort(MPI_COMM_WORLD, 1);
-    return 1;
-  }
-  if (rank == 0) std::fprintf(stderr, "boltnet: error: %s\n", msg.c_str());
-  // Nothing more to say: no list of options left unused by a run that stopped.
-  PetscOptionsClearValue(nullptr, "-options_left");
-  MPI_Comm_free(&agree);
-  PetscPopErrorHandler();
-  PetscFinalize();
-  return 1;
-}
-
 } // namespace
 
 int main(int argc, char **argv)
 {
-  int      exitcode = 0;
-  ErrorLog log;
-  MPI_Comm agree = MPI_COMM_NULL;
-  if (PetscInitialize(&argc, &argv, nullptr, help)) return 1;
-  // Errors are collected, not printed as PETSc's traceback (one line instead of about forty);
-  // Fail() prints the message.
-  if (PetscPushErrorHandler(CaptureErrorHandler, &log) || MPI_Comm_dup(PETSC_COMM_WORLD, &agree)) return 1;
-  PetscErrorCode ierr;
-  try {
-    ierr = Run(&exitcode, &log);
-  } catch (const std::bad_alloc &) {
-    log.messages.push_back("Out of memory");
-    ierr = PETSC_ERR_MEM;
-  } catch (const std::exception &e) {
-    log.messages.push_back(std::string("C++ exception: ") + e.what());
-    ierr = PETSC_ERR_LIB;
-  }
-  if (ierr) return Fail(agree, log);
-  MPI_Comm_free(&agree);
-  PetscPopErrorHandler();
-  if (PetscFinalize()) return 1;
-  return exitcode;
+  return DriverMain("boltnet", &argc, &argv, help, Run);
 }
