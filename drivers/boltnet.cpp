@@ -26,6 +26,21 @@ using namespace boltnet;
 
 namespace {
 
+// The assembly and the open result files are released on every return from Run, an error's
+// included, so that a run stopped by bad input leaks nothing (scripts/sanitize checks it). Their
+// own errors then are not the one reported.
+struct Release {
+  BoltnetAssembly a = nullptr;
+  Output          out;
+  ~Release()
+  {
+    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    OutputDiscard(&out);
+    BoltnetAssemblyDestroy(&a);
+    PetscPopErrorHandler();
+  }
+};
+
 PetscErrorCode Run(int *exitcode, ErrorLog *log)
 {
   MPI_Comm        comm = PETSC_COMM_WORLD;
@@ -33,8 +48,9 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE, fields = PETSC_TRUE;
   Scene           scene;
   LoadPath        path;
-  BoltnetAssembly a = nullptr;
-  Output          out;
+  Release         held;
+  BoltnetAssembly &a   = held.a;
+  Output          &out = held.out;
   PetscFunctionBeginUser;
   PetscCall(BoltnetInitializePackage());
   PetscCall(PetscOptionsHasHelp(nullptr, &helpOnly));

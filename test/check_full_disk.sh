@@ -26,6 +26,7 @@ fi
 if [ -e "$dir/summary.json.tmp" ] || [ -L "$dir/summary.json.tmp" ]; then
   echo "check_full_disk.sh: the temporary summary.json.tmp was left behind"; ok=0
 fi
+! grep -Eq -- "runtime error: |ERROR: (Address|Leak|UndefinedBehavior)Sanitizer" <<<"$out" || { echo "check_full_disk.sh: a sanitizer reported an error"; ok=0; }
 [ "$(grep -c 'PETSC ERROR' <<<"$out")" = 0 ] || { echo "check_full_disk.sh: PETSc's traceback was printed"; ok=0; }
 [ $ok = 1 ] && echo "check_full_disk.sh: as expected" && exit 0
 exit 1

@@ -36,6 +36,10 @@ if [ $want_fail = 0 ] && [ $status != 0 ]; then echo "expect.sh: expected succes
 for r in "${matches[@]+"${matches[@]}"}"; do
   if ! grep -Eq -- "$r" <<<"$out"; then echo "expect.sh: output does not match: $r"; ok=0; fi
 done
+# A sanitizer's report (scripts/sanitize) is a failure even where the command must fail.
+if grep -Eq -- "runtime error: |ERROR: (Address|Leak|UndefinedBehavior)Sanitizer" <<<"$out"; then
+  echo "expect.sh: a sanitizer reported an error"; ok=0
+fi
 if [ -n "$max_lines" ] && [ "$(printf '%s\n' "$out" | wc -l)" -gt "$max_lines" ]; then
   echo "expect.sh: more than $max_lines line(s) of output"; ok=0
 fi

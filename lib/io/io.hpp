@@ -68,6 +68,8 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
 PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
 // Collective: rank 0's error closing joints.csv is every rank's.
 PetscErrorCode OutputClose(MPI_Comm comm, Output *out);
+// Closes what is open without checking or communicating: the cleanup of a run stopped by an error.
+void OutputDiscard(Output *out);
 // Rank 0: `text` into `path` through `path`.tmp, checked at every step, then renamed; on failure
 // the temporary file is removed and the message (file and reason) returned; "" on success.
 std::string WriteFileWhole(const std::string &path, const std::string &text);

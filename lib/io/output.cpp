@@ -195,6 +195,13 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   PetscFunctionReturn(0);
 }
 
+void OutputDiscard(Output *out)
+{
+  if (out->csv) std::fclose(out->csv);
+  out->csv = nullptr;
+  PetscViewerDestroy(&out->ff.viewer);
+}
+
 PetscErrorCode OutputClose(MPI_Comm comm, Output *out)
 {
   std::string why;
