@@ -14,24 +14,43 @@ step; open fields.xdmf in ParaView: docs/output.md).\n\
 Options on the command line override the scene file. With -options_left, an option that nothing\n\
 used is an error.\n\n";
 
+#include "driver.hpp"
 #include "io/io.hpp"
+#include "io/limits.hpp"
 #include "solver/loadpath.hpp"
 
+#include <new>
 #include <string>
 
 using namespace boltnet;
 
 namespace {
 
-PetscErrorCode Run(int *exitcode)
+// The assembly and the open result files are released on every return from Run, an error's
+// included, so that a run stopped by bad input leaks nothing (scripts/sanitize checks it). Their
+// own errors then are not the one reported.
+struct Release {
+  BoltnetAssembly a = nullptr;
+  Output          out;
+  ~Release()
+  {
+    PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    OutputDiscard(&out);
+    BoltnetAssemblyDestroy(&a);
+    PetscPopErrorHandler();
+  }
+};
+
+PetscErrorCode Run(int *exitcode, ErrorLog *log)
 {
   MPI_Comm        comm = PETSC_COMM_WORLD;
   char            file[PETSC_MAX_PATH_LEN] = "", outdir[PETSC_MAX_PATH_LEN] = "";
   PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE, fields = PETSC_TRUE;
   Scene           scene;
   LoadPath        path;
-  BoltnetAssembly a = nullptr;
-  Output          out;
+  Release         held;
+  BoltnetAssembly &a   = held.a;
+  Output          &out = held.out;
   PetscFunctionBeginUser;
   PetscCall(BoltnetInitializePackage());
   PetscCall(PetscOptionsHasHelp(nullptr, &helpOnly));
@@ -50,17 +69,32 @@ PetscErrorCode Run(int *exitcode)
   }
   PetscCheck(hasScene, comm, PETSC_ERR_USER_INPUT, "No scene: give -scene <file.yaml> (e.g. -scene share/scenes/fig3c.yaml); -help lists the options");
   PetscCall(SceneInsertOptionsFile(comm, file, &scene));
+  PetscCall(SceneCheckOptionValues(comm));
 
   // Everything is read and checked before anything is written.
   PetscCall(BoltnetAssemblyCreate(comm, &a));
   PetscCall(SceneDescribeAssembly(comm, &scene, a));
   PetscCall(LoadPathFromOptions(comm, nullptr, &path));
+  {
+    const std::int64_t segments = std::max<std::int64_t>(1, (std::int64_t)path.breakpoints.size());
+    PetscCheck(segments * path.steps_per_segment <= limits::kMaxLoadSteps, comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT " over %lld segment(s) of the load path is more than the limit of %lld steps (docs/scenes.md, \"Limits\")", path.steps_per_segment, (long long)segments, (long long)limits::kMaxLoadSteps);
+  }
   PetscCall(BoltnetAssemblySetFromOptions(a));
   PetscCall(BoltnetAssemblySetUp(a));
   PetscCall(SceneCheckUnusedOptions(comm));
   if (helpOnly) {
     PetscCall(BoltnetAssemblyDestroy(&a));
     PetscFunctionReturn(0);
+  }
+  // With -options_left, an option nothing has used by now (except those PETSc reads only during or
+  // after a solve) stops the run before anything is written.
+  if (optionsLeft) {
+    PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_TRUE, exitcode));
+    if (*exitcode) {
+      PetscCall(PetscOptionsClearValue(nullptr, "-options_left")); // said above: PETSc's list would repeat it
+      PetscCall(BoltnetAssemblyDestroy(&a));
+      PetscFunctionReturn(0);
+    }
   }
 
   const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
@@ -72,12 +106,21 @@ PetscErrorCode Run(int *exitcode)
   PetscCall(PetscPrintf(comm, "\n"));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
-  // program exits non-zero.
-  PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
-  PetscErrorCode ierr = BoltnetAssemblySolveLoadPath(a, (PetscInt)path.breakpoints.size(), path.breakpoints.data(), path.steps_per_segment);
-  PetscCall(PetscPopErrorHandler());
+  // program exits 3. Any other error (a file that cannot be written, a library failure) goes up
+  // with its own message and leaves no summary.json: OutputOpen removed the last run's.
+  log->messages.clear();
+  PetscErrorCode ierr;
+  try {
+    ierr = BoltnetAssemblySolveLoadPath(a, (PetscInt)path.breakpoints.size(), path.breakpoints.data(), path.steps_per_segment);
+  } catch (const std::bad_alloc &) {
+    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory during the load path");
+  }
+  if (ierr && a->failure.empty()) {
+    const std::string why = ErrorText(*log);
+    SETERRQ(comm, ierr, "The load path stopped at load factor %g: %s", (double)a->lambda, why.empty() ? "PETSc error" : why.c_str());
+  }
+  log->messages.clear();
   if (ierr) {
-    PetscCheck(!a->failure.empty(), comm, ierr == PETSC_ERR_NOT_CONVERGED ? PETSC_ERR_NOT_CONVERGED : PETSC_ERR_LIB, "The load path failed (error %d)", (int)ierr);
     PetscCall(PetscPrintf(comm, "boltnet: FAILED: %s\n", a->failure.c_str()));
     PetscCall(OutputSummary(a, &out, "failed", a->failure));
     *exitcode = 3;
@@ -87,10 +130,10 @@ PetscErrorCode Run(int *exitcode)
     if (out.most_joint >= 0)
       PetscCall(PetscPrintf(comm, "boltnet: most loaded joint %" PetscInt_FMT ": in-plane force %g at step %" PetscInt_FMT " (load %g)\n", out.most_joint, (double)out.most_force, out.most_step, (double)out.most_load));
   }
-  PetscCall(OutputClose(&out));
+  PetscCall(OutputClose(comm, &out));
   PetscCall(BoltnetAssemblyDestroy(&a));
 
-  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet", exitcode)); // an error, not a warning
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_FALSE, exitcode)); // an error, not a warning
   PetscFunctionReturn(0);
 }
 
@@ -98,11 +141,5 @@ PetscErrorCode Run(int *exitcode)
 
 int main(int argc, char **argv)
 {
-  int exitcode = 0;
-  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
-  // An error returns from main at once with PETSc's message (mpiexec then ends every rank), so an
-  // error raised on one rank alone cannot leave the others waiting.
-  PetscCall(Run(&exitcode));
-  PetscCall(PetscFinalize());
-  return exitcode;
+  return DriverMain("boltnet", &argc, &argv, help, Run);
 }

@@ -15,6 +15,7 @@ Units: any consistent set (N, mm, MPa, N mm in the examples). Formulas, sources 
 docs/identify.md. Bad input stops with a message naming it and a non-zero exit.\n\n";
 
 #include "core/guard.hpp"
+#include "driver.hpp"
 #include "identify/coupon.hpp"
 #include "identify/curve.hpp"
 #include "identify/fastener.hpp"
@@ -164,7 +165,7 @@ PetscErrorCode Run(int *exitcode)
   }
   if (hasCurve) PetscCall(CurveMode(comm, file, jointType));
   else PetscCall(GeometryMode(comm, jointType));
-  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet-identify", exitcode)); // an error, not a warning
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "boltnet-identify", PETSC_FALSE, exitcode)); // an error, not a warning
   PetscFunctionReturn(0);
 }
 
@@ -172,9 +173,5 @@ PetscErrorCode Run(int *exitcode)
 
 int main(int argc, char **argv)
 {
-  int exitcode = 0;
-  PetscCall(PetscInitialize(&argc, &argv, nullptr, help));
-  PetscCall(Run(&exitcode));
-  PetscCall(PetscFinalize());
-  return exitcode;
+  return DriverMain("boltnet-identify", &argc, &argv, help, [](int *exitcode, ErrorLog *) { return Run(exitcode); });
 }

@@ -4,7 +4,11 @@
 # --fail            the command must exit non-zero (default: it must exit 0)
 # --match REGEX     its output (stdout and stderr) must match REGEX (grep -E)
 # --unchanged FILE  FILE must be byte-for-byte the same after the command (nothing written is corrupted)
+# --max-lines N     its output must have at most N lines (an error is one line, not a traceback)
+# --absent PATH     PATH must not exist after the command (nothing was written)
 set -u
+max_lines=''
+absent=()
 want_fail=0
 matches=()
 keep=()
@@ -12,7 +16,9 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --fail) want_fail=1 ;;
     --match) matches+=("$2"); shift ;;
-    --unchanged) keep+=("$1" "$2"); keep=("${keep[@]:0:${#keep[@]}-2}" "$2"); shift ;;
+    --unchanged) keep+=("$2"); shift ;;
+    --max-lines) max_lines=$2; shift ;;
+    --absent) absent+=("$2"); shift ;;
     --) shift; break ;;
     *) echo "expect.sh: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -29,6 +35,16 @@ if [ $want_fail = 1 ] && [ $status = 0 ]; then echo "expect.sh: expected a failu
 if [ $want_fail = 0 ] && [ $status != 0 ]; then echo "expect.sh: expected success, the command exited $status"; ok=0; fi
 for r in "${matches[@]+"${matches[@]}"}"; do
   if ! grep -Eq -- "$r" <<<"$out"; then echo "expect.sh: output does not match: $r"; ok=0; fi
+done
+# A sanitizer's report (scripts/sanitize) is a failure even where the command must fail.
+if grep -Eq -- "runtime error: |ERROR: (Address|Leak|UndefinedBehavior)Sanitizer" <<<"$out"; then
+  echo "expect.sh: a sanitizer reported an error"; ok=0
+fi
+if [ -n "$max_lines" ] && [ "$(printf '%s\n' "$out" | wc -l)" -gt "$max_lines" ]; then
+  echo "expect.sh: more than $max_lines line(s) of output"; ok=0
+fi
+for f in "${absent[@]+"${absent[@]}"}"; do
+  if [ -e "$f" ]; then echo "expect.sh: $f exists"; ok=0; fi
 done
 i=0
 for f in "${keep[@]+"${keep[@]}"}"; do

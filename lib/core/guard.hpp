@@ -4,6 +4,7 @@
 #include <petscsys.h>
 
 #include <exception>
+#include <new>
 #include <string>
 
 namespace boltnet {
@@ -13,6 +14,8 @@ PetscErrorCode Guard(MPI_Comm comm, F &&body)
 {
   try {
     return body();
+  } catch (const std::bad_alloc &) {
+    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory (a C++ allocation in boltnet failed)");
   } catch (const std::exception &e) {
     SETERRQ(comm, PETSC_ERR_LIB, "C++ exception in boltnet: %s", e.what());
   } catch (...) {

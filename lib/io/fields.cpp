@@ -1,5 +1,6 @@
 // Field output: fields.h5 (PETSc's HDF5 viewer) and fields.xdmf (ParaView), docs/output.md.
-// A pure writer of the structs that network/fields.cpp gathers; rank 0 only.
+// A pure writer of the structs that network/fields.cpp gathers; rank 0 only. HDF5 itself is called
+// once, to silence its error printing.
 #include "io/io.hpp"
 
 #include <petscviewerhdf5.h>
@@ -99,14 +100,8 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
       << "   </Grid>\n";
   }
   o << "  </Grid>\n </Domain>\n</Xdmf>\n";
-  const std::string path = ff.dir + "/fields.xdmf", tmp = path + ".tmp";
-  FILE             *f    = std::fopen(tmp.c_str(), "w");
-  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s", tmp.c_str());
-  const bool ok = std::fputs(o.str().c_str(), f) >= 0;
-  PetscCheck(std::fclose(f) == 0 && ok, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s", tmp.c_str());
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  PetscCheck(!ec, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s", path.c_str());
+  const std::string why = WriteFileWhole(ff.dir + "/fields.xdmf", o.str());
+  PetscCheck(why.empty(), PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "%s", why.c_str());
   PetscFunctionReturn(0);
 }
 
@@ -120,7 +115,12 @@ PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::
   // steps, 1 rank): reopening the file per step cost 0.1 s a step, the flush costs 0.05 s (PETSc
   // opens HDF5 files through MPI-IO, whose sync waits), writing without flushing 0.005 s.
   const bool first = ff->steps.empty();
-  if (!ff->viewer) PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/" + kH5).c_str(), FILE_MODE_WRITE, &ff->viewer));
+  if (!ff->viewer) {
+    // HDF5 prints its own error stack (a dozen lines) before PETSc's viewer reports the failure with
+    // the file's name: the caller's message is the one shown (docs/output.md).
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/" + kH5).c_str(), FILE_MODE_WRITE, &ff->viewer));
+  }
   PetscViewer v = ff->viewer;
   if (first) {
     std::vector<double>   x, jx;

@@ -25,9 +25,18 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
 // Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
 // a misspelled boltnet option stops the run before it starts.
 PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);
+// boltnet's integer options (-load_steps, -load_max_cuts, -patch_max_nodes, ...) as 64-bit
+// integers in PetscInt's range, before PETSc reads them (it would truncate 99999999999 silently).
+PetscErrorCode SceneCheckOptionValues(MPI_Comm comm);
+// Names ("-a, -b") of the options whose value is `value`: to name the option behind PETSc's "Input
+// string abc has no numeric value".
+PetscErrorCode OptionsWithValue(const std::string &value, std::string *names);
+// PetscOptionsGetAll()'s "-name value -name value" as (name without '-', value) pairs.
+std::vector<std::pair<std::string, std::string>> OptionsSplit(const std::string &all);
 // With -options_left the drivers make an option that nothing used an error rather than PETSc's
-// warning (Debian's PETSc otherwise ignores typos): prints them and sets *exitcode = 2.
-PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], int *exitcode);
+// warning (Debian's PETSc otherwise ignores typos): prints them and sets *exitcode = 2. Before the
+// solve (before_solve true), the options PETSc reads only during or after a solve are not counted.
+PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], PetscBool before_solve, int *exitcode);
 
 // Fields (io/fields.cpp): fields.h5 and fields.xdmf under dir, one step at a time, by rank 0.
 struct FieldsFile {
@@ -57,7 +66,13 @@ struct Output {
 PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out);
 PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
 PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
-PetscErrorCode OutputClose(Output *out);
+// Collective: rank 0's error closing joints.csv is every rank's.
+PetscErrorCode OutputClose(MPI_Comm comm, Output *out);
+// Closes what is open without checking or communicating: the cleanup of a run stopped by an error.
+void OutputDiscard(Output *out);
+// Rank 0: `text` into `path` through `path`.tmp, checked at every step, then renamed; on failure
+// the temporary file is removed and the message (file and reason) returned; "" on success.
+std::string WriteFileWhole(const std::string &path, const std::string &text);
 
 // Read a whole text file on rank 0 and broadcast it; a missing or unreadable file is an error
 // naming `what` and the path.

@@ -1,8 +1,11 @@
 // Results: joints.csv (one row per joint per converged step), summary.json and the fields
 // (io/fields.cpp), written by rank 0.
 #include "io/io.hpp"
+#include "core/errors.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <sstream>
 
@@ -21,7 +24,59 @@ std::string JsonString(const std::string &s)
   return o + "\"";
 }
 
+// A number for JSON, which has no NaN or infinity: those are written as null.
+std::string JsonNumber(double x)
+{
+  if (!std::isfinite(x)) return "null";
+  std::ostringstream o;
+  o.precision(17);
+  o << x;
+  return o.str();
+}
+
+// Rank 0's write error (empty: none) becomes the same error on every rank: ranks go on or stop
+// together, and the message names the file and the reason.
+PetscErrorCode ShareError(MPI_Comm comm, const std::string &error)
+{
+  PetscMPIInt rank;
+  int         len = 0;
+  std::string msg = error;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) len = (int)msg.size();
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, 0, comm));
+  if (!len) PetscFunctionReturn(0);
+  msg.resize((size_t)len);
+  PetscCallMPI(MPI_Bcast(msg.data(), len, MPI_CHAR, 0, comm));
+  SETERRQ(comm, PETSC_ERR_FILE_WRITE, "%s", msg.c_str());
+}
+
+std::string Why(const std::string &path)
+{
+  return "Cannot write " + path + ": " + std::strerror(errno);
+}
+
 } // namespace
+
+// The whole of `text` into `path` through `path`.tmp and a rename: on disk the file is either absent
+// (or the previous one) or whole. Every step is checked (a full disk fails at the flush or the
+// close, not at fputs); on failure the temporary file is removed. Returns the error, "" if none.
+std::string WriteFileWhole(const std::string &path, const std::string &text)
+{
+  const std::string tmp = path + ".tmp";
+  std::error_code   ec;
+  FILE             *f = std::fopen(tmp.c_str(), "w");
+  if (!f) return Why(tmp);
+  errno         = 0;
+  std::string e = std::fputs(text.c_str(), f) < 0 || std::fflush(f) != 0 ? Why(tmp) : "";
+  if (std::fclose(f) != 0 && e.empty()) e = Why(tmp);
+  if (e.empty()) {
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) e = "Cannot write " + path + ": " + ec.message();
+  }
+  if (!e.empty()) std::filesystem::remove(tmp, ec);
+  return e;
+}
 
 PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out)
 {
@@ -44,10 +99,14 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
     std::filesystem::remove(dir + "/fields.h5", ec);
     out->csv = std::fopen((dir + "/joints.csv").c_str(), "w");
     ok       = out->csv ? 1 : 0;
-    if (ok) std::fprintf(out->csv, "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2\n");
+    if (ok) {
+      errno = 0;
+      if (std::fprintf(out->csv, "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2\n") < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
+    }
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "Cannot write results in the output directory '%s' (-output_dir)", dir.c_str());
+  PetscCall(ShareError(comm, why));
   PetscFunctionReturn(0);
 }
 
@@ -60,18 +119,22 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
     std::vector<JointLine> lines;
     PetscErrorCode         ierr = 0;
     PetscCall(AssemblyGatherFields(a, parts, lines));
+    std::string            why;
     if (a->rank == 0) { // rank 0 alone writes: its error is shared before anyone goes on
-      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, nullptr));
+      ErrorLog log;
+      PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
       ierr = FieldsWriteStep(&out->ff, info, parts, lines);
       PetscCall(PetscPopErrorHandler());
+      if (ierr) why = "Cannot write the fields of step " + std::to_string(info.step) + " in " + out->dir + "/fields.h5 or fields.xdmf (-output_fields false turns them off): " + ErrorText(log);
     }
-    PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, a->comm));
-    PetscCheck(!ierr, a->comm, PETSC_ERR_FILE_WRITE, "Cannot write the fields of step %" PetscInt_FMT " in %s/fields.h5 (error %d; -output_fields false turns them off)", info.step, out->dir.c_str(), (int)ierr);
+    PetscCall(ShareError(a->comm, why));
   }
   PetscCall(AssemblyGatherRecords(a, rec));
-  if (a->rank != 0) PetscFunctionReturn(0);
-  for (const JointRecord &r : rec) {
-    std::fprintf(out->csv, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", info.step, (double)info.load, r.joint, stateName(static_cast<State>(r.state)), r.jump[0], r.jump[1], r.jump[2], r.force[0], r.force[1], r.force[2], r.bearing, r.slip[0], r.slip[1]);
+  std::string why;
+  for (const JointRecord &r : rec) { // rank 0 has the records, the others none
+    if (!why.empty()) break;
+    errno = 0;
+    if (std::fprintf(out->csv, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", info.step, (double)info.load, r.joint, stateName(static_cast<State>(r.state)), r.jump[0], r.jump[1], r.jump[2], r.force[0], r.force[1], r.force[2], r.bearing, r.slip[0], r.slip[1]) < 0) why = Why(out->dir + "/joints.csv");
     const PetscReal ft = std::hypot(r.force[1], r.force[2]);
     if (ft > out->most_force) {
       out->most_force = ft;
@@ -80,7 +143,12 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
       out->most_load  = info.load;
     }
   }
-  std::fflush(out->csv);
+  // Each step is on disk (or its failure known) before the next is solved.
+  if (a->rank == 0 && why.empty()) {
+    errno = 0;
+    if (std::fflush(out->csv) != 0) why = Why(out->dir + "/joints.csv");
+  }
+  PetscCall(ShareError(a->comm, why));
   PetscFunctionReturn(0);
 }
 
@@ -102,41 +170,47 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCGetType(pc, &ptype));
   PetscCall(PCFactorGetMatSolverType(pc, &stype));
-  if (a->rank != 0) PetscFunctionReturn(0);
-  std::ostringstream j;
-  j.precision(17);
-  j << "{\n  \"scene\": " << JsonString(out->scene) << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
-    << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.joints.size() << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->opt.condense ? "true" : "false") << ",\n  \"dof_imbalance\": " << a->net.dof_imbalance << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
-    << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))
-    << ",\n  \"steps\": " << a->steps.size() << ",\n  \"final_load\": " << a->lambda << ",\n  \"cutbacks\": " << a->total_cutbacks << ",\n  \"newton_iterations\": [";
-  for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].newton_its;
-  j << "],\n  \"cutbacks_per_step\": [";
-  for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].cutbacks;
-  j << "],\n  \"stuck_linear\": " << (a->opt.stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << (a->joints.joint_steps ? (double)a->joints.frozen_joint_steps / (double)a->joints.joint_steps : 0.0)
-    << ",\n  \"released\": " << a->joints.released << ",\n  \"jacobians_assembled\": " << a->joints.jac_assembled << ",\n  \"jacobians_reused\": " << a->joints.jac_reused;
-  j << ",\n  \"most_loaded_joint\": ";
-  if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << out->most_load << ", \"in_plane_force\": " << out->most_force << "}";
-  else j << "null";
-  j << ",\n  \"identified_joint_types\": " << out->identified;
-  j << "\n}\n";
-  // Write then rename, so that summary.json is either absent or whole.
-  const std::string tmp = out->dir + "/summary.json.tmp";
-  FILE             *f   = std::fopen(tmp.c_str(), "w");
-  PetscCheck(f, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s", tmp.c_str());
-  std::fputs(j.str().c_str(), f);
-  std::fclose(f);
-  std::error_code ec;
-  std::filesystem::rename(tmp, out->dir + "/summary.json", ec);
-  PetscCheck(!ec, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s/summary.json", out->dir.c_str());
+  std::string why;
+  if (a->rank == 0) {
+    std::ostringstream j;
+    j.precision(17);
+    j << "{\n  \"scene\": " << JsonString(out->scene) << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
+      << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.joints.size() << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->opt.condense ? "true" : "false") << ",\n  \"dof_imbalance\": " << JsonNumber(a->net.dof_imbalance) << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
+      << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))
+      << ",\n  \"steps\": " << a->steps.size() << ",\n  \"final_load\": " << JsonNumber(a->lambda) << ",\n  \"cutbacks\": " << a->total_cutbacks << ",\n  \"newton_iterations\": [";
+    for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].newton_its;
+    j << "],\n  \"cutbacks_per_step\": [";
+    for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].cutbacks;
+    j << "],\n  \"stuck_linear\": " << (a->opt.stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << JsonNumber(a->joints.joint_steps ? (double)a->joints.frozen_joint_steps / (double)a->joints.joint_steps : 0.0)
+      << ",\n  \"released\": " << a->joints.released << ",\n  \"jacobians_assembled\": " << a->joints.jac_assembled << ",\n  \"jacobians_reused\": " << a->joints.jac_reused;
+    j << ",\n  \"most_loaded_joint\": ";
+    if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << JsonNumber(out->most_load) << ", \"in_plane_force\": " << JsonNumber(out->most_force) << "}";
+    else j << "null";
+    j << ",\n  \"identified_joint_types\": " << out->identified;
+    j << "\n}\n";
+    // Written last, whole or not at all: a summary on disk is never a cut one.
+    why = WriteFileWhole(out->dir + "/summary.json", j.str());
+  }
+  PetscCall(ShareError(a->comm, why));
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode OutputClose(Output *out)
+void OutputDiscard(Output *out)
 {
-  PetscFunctionBeginUser;
   if (out->csv) std::fclose(out->csv);
   out->csv = nullptr;
+  PetscViewerDestroy(&out->ff.viewer);
+}
+
+PetscErrorCode OutputClose(MPI_Comm comm, Output *out)
+{
+  std::string why;
+  PetscFunctionBeginUser;
+  errno = 0;
+  if (out->csv && std::fclose(out->csv) != 0) why = Why(out->dir + "/joints.csv");
+  out->csv = nullptr;
   PetscCall(FieldsClose(&out->ff));
+  PetscCall(ShareError(comm, why));
   PetscFunctionReturn(0);
 }
 

@@ -1,5 +1,8 @@
 #include "mesh/gmsh.hpp"
+#include "io/limits.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -10,10 +13,7 @@ namespace {
 
 class Reader {
 public:
-  explicit Reader(const std::string &path) : path_(path), in_(path)
-  {
-    if (!in_) throw std::runtime_error("Cannot read the mesh file '" + path + "'");
-  }
+  Reader(const std::string &path, const std::string &text) : path_(path), in_(text) {}
   // Next non-empty line.
   std::string line()
   {
@@ -36,11 +36,19 @@ public:
     if (!(ss >> v)) fail(std::string("expected ") + what);
     return v;
   }
+  // A count: never negative. The items it announces are read one line at a time, so a count larger
+  // than the file ends at "unexpected end of file" instead of a huge allocation.
+  long count(std::istringstream &ss, const char *what)
+  {
+    const long n = get<long>(ss, what);
+    if (n < 0) fail(std::string(what) + " is negative");
+    return n;
+  }
   bool eof() { return !in_.good(); }
   std::string path_;
 
 private:
-  std::ifstream in_;
+  std::istringstream in_;
   int           lineno_ = 0;
 };
 
@@ -48,7 +56,18 @@ private:
 
 std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
 {
-  Reader                                    r(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("Cannot read the mesh file '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw std::runtime_error("Cannot read the mesh file '" + path + "'");
+  if ((long long)ss.tellp() > limits::kMaxInputBytes) throw std::runtime_error("Mesh file '" + path + "' is larger than " + std::to_string(limits::kMaxInputBytes) + " bytes (docs/scenes.md, \"Limits\")");
+  return ParseGmsh(path, ss.str());
+}
+
+std::map<std::string, QuadMesh> ParseGmsh(const std::string &path, const std::string &text)
+{
+  Reader                                    r(path, text);
   std::map<std::pair<int, int>, std::string> names;          // (dim, physical tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> physOf;   // (dim, entity tag) -> physical tags
   std::map<long, std::array<double, 3>>     nodes;           // node tag -> coordinates
@@ -72,8 +91,8 @@ std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
       format = true;
     } else if (s == "$PhysicalNames") {
       std::istringstream ss(r.line());
-      const int          n = r.get<int>(ss, "the number of physical names");
-      for (int i = 0; i < n; ++i) {
+      const long         n = r.count(ss, "the number of physical names");
+      for (long i = 0; i < n; ++i) {
         std::istringstream ls(r.line());
         const int          dim = r.get<int>(ls, "a dimension"), tag = r.get<int>(ls, "a physical tag");
         std::string        rest;
@@ -84,29 +103,33 @@ std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
       }
     } else if (s == "$Entities") {
       std::istringstream ss(r.line());
-      int                count[4];
-      for (int &c : count) c = r.get<int>(ss, "entity counts");
+      long               count[4];
+      for (long &c : count) c = r.count(ss, "entity counts");
       for (int dim = 0; dim < 4; ++dim)
-        for (int i = 0; i < count[dim]; ++i) {
+        for (long i = 0; i < count[dim]; ++i) {
           std::istringstream ls(r.line());
           const int          tag = r.get<int>(ls, "an entity tag");
           for (int k = 0; k < (dim == 0 ? 3 : 6); ++k) r.get<double>(ls, "a bounding box");
-          const int nphys = r.get<int>(ls, "the number of physical tags");
-          for (int k = 0; k < nphys; ++k) physOf[{dim, tag}].push_back(std::abs(r.get<int>(ls, "a physical tag")));
+          const long nphys = r.count(ls, "the number of physical tags");
+          for (long k = 0; k < nphys; ++k) {
+            const int ph = r.get<int>(ls, "a physical tag"); // its sign is the orientation
+            if (ph == INT_MIN) r.fail("physical tag out of range");
+            physOf[{dim, tag}].push_back(ph < 0 ? -ph : ph);
+          }
         }
     } else if (s == "$Nodes") {
       if (!format) r.fail("$Nodes before $MeshFormat: not an MSH file");
       std::istringstream ss(r.line());
-      const long         blocks = r.get<long>(ss, "the number of node blocks");
+      const long         blocks = r.count(ss, "the number of node blocks");
       for (long b = 0; b < blocks; ++b) {
         std::istringstream hs(r.line());
         const int          dim = r.get<int>(hs, "an entity dimension"), tag = r.get<int>(hs, "an entity tag");
         const int          param = r.get<int>(hs, "the parametric flag");
-        const long         n     = r.get<long>(hs, "the number of nodes in the block");
-        std::vector<long>  tags(n);
+        const long         n     = r.count(hs, "the number of nodes in the block");
+        std::vector<long>  tags;
         for (long i = 0; i < n; ++i) {
           std::istringstream ls(r.line());
-          tags[i] = r.get<long>(ls, "a node tag");
+          tags.push_back(r.get<long>(ls, "a node tag"));
         }
         for (long i = 0; i < n; ++i) {
           std::istringstream ls(r.line());
@@ -120,12 +143,12 @@ std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
     } else if (s == "$Elements") {
       if (!format) r.fail("$Elements before $MeshFormat: not an MSH file");
       std::istringstream ss(r.line());
-      const long         blocks = r.get<long>(ss, "the number of element blocks");
+      const long         blocks = r.count(ss, "the number of element blocks");
       for (long b = 0; b < blocks; ++b) {
         std::istringstream hs(r.line());
         const int          dim = r.get<int>(hs, "an entity dimension"), tag = r.get<int>(hs, "an entity tag");
         const int          type = r.get<int>(hs, "an element type");
-        const long         n    = r.get<long>(hs, "the number of elements in the block");
+        const long         n    = r.count(hs, "the number of elements in the block");
         const int          nn   = type == 1 ? 2 : type == 2 ? 3 : type == 3 ? 4 : type == 15 ? 1 : -1;
         if (nn < 0) r.fail("element type " + std::to_string(type) + " is not supported (4-node quadrangles, lines, points)");
         std::vector<std::string> groups;
@@ -135,6 +158,7 @@ std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
           r.get<long>(ls, "an element tag");
           std::array<long, 4> q{};
           for (int k = 0; k < nn; ++k) q[k] = r.get<long>(ls, "element nodes");
+          if (type == 3 && (q[0] == q[1] || q[0] == q[2] || q[0] == q[3] || q[1] == q[2] || q[1] == q[3] || q[2] == q[3])) r.fail("a quadrangle names the same node twice");
           for (const std::string &g : groups) {
             for (int k = 0; k < nn; ++k) groupNodes[g].insert(q[k]);
             if (dim != 2) continue;

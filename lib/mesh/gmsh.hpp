@@ -14,5 +14,8 @@ namespace boltnet {
 // missing file, a file that is not an MSH 4.1 ASCII mesh, or elements other than 4-node quadrangles
 // in a part.
 std::map<std::string, QuadMesh> ReadGmsh(const std::string &path);
+// The same from the file's text (path names it in messages): the pure parser, for tests and fuzzing.
+// Counts are checked before use and nothing is allocated from a count, only from lines read.
+std::map<std::string, QuadMesh> ParseGmsh(const std::string &path, const std::string &text);
 
 } // namespace boltnet

@@ -1,0 +1,99 @@
+// The drivers' main(): PETSc's errors are collected rather than printed as its traceback (about
+// forty lines), and an error ends the program with one line naming the problem and exit code 1 on
+// every rank (docs/scenes.md, "Errors").
+#pragma once
+#include "core/errors.hpp"
+#include "io/io.hpp"
+
+#include <petscsys.h>
+
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
+
+namespace boltnet {
+
+// How long a rank that stopped on an error waits for the others to stop too (seconds). Checks of
+// input are collective (every rank raises the same error at the same point) and the ranks then end
+// cleanly; an error raised on some ranks only leaves the others waiting in a collective call, and
+// only MPI_Abort can end them.
+constexpr double kErrorAgreeSeconds = 10;
+
+// The message of the error: the outermost context and the first cause (core/errors.hpp); PETSc's
+// complaint about an option's value ("Input string abc has no numeric value") names the option(s)
+// with that value.
+inline std::string DescribeError(const ErrorLog &log)
+{
+  std::string msg = ErrorText(log);
+  if (msg.empty()) msg = "unknown error";
+  try {
+    // PETSc 3.18's words for a value it cannot convert (PetscOptionsStringToInt, _ToReal, _ToBool).
+    std::string  value;
+    const size_t a = msg.find("Input string "), b = msg.find(" has no "), c = msg.find("Unknown logical value: ");
+    if (a != std::string::npos && b != std::string::npos && b > a) value = msg.substr(a + 13, b - a - 13);
+    else if (c != std::string::npos) value = msg.substr(c + 23);
+    std::string names;
+    if (!value.empty() && !OptionsWithValue(value, &names) && !names.empty()) msg = "option " + names + ": " + msg;
+  } catch (...) {
+  }
+  return msg;
+}
+
+// One line on rank 0 and a clean PetscFinalize on every rank when every rank stopped on the error;
+// the message of each rank that did and MPI_Abort otherwise (after kErrorAgreeSeconds).
+inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log)
+{
+  const std::string msg = DescribeError(log);
+  int               rank = 0, done = 0;
+  MPI_Request       req;
+  MPI_Comm_rank(agree, &rank);
+  MPI_Ibarrier(agree, &req);
+  const double t0 = MPI_Wtime();
+  while (!done && MPI_Wtime() - t0 < kErrorAgreeSeconds) {
+    MPI_Test(&req, &done, MPI_STATUS_IGNORE);
+    if (!done) PetscSleep(0.01);
+  }
+  if (!done) {
+    std::fprintf(stderr, "%s: error (rank %d): %s\n", program, rank, msg.c_str());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
+  if (rank == 0) std::fprintf(stderr, "%s: error: %s\n", program, msg.c_str());
+  // Nothing more to say: no list of options left unused by a run that stopped.
+  PetscOptionsClearValue(nullptr, "-options_left");
+  MPI_Comm_free(&agree);
+  PetscPopErrorHandler();
+  PetscFinalize();
+  return 1;
+}
+
+// main() of a driver whose work is run(&exitcode, &log): returns the exit code (exitcode, or 1 on
+// an error, PETSc's or a C++ exception).
+template <class Run>
+int DriverMain(const char *program, int *argc, char ***argv, const char *help, Run run)
+{
+  int      exitcode = 0;
+  ErrorLog log;
+  MPI_Comm agree = MPI_COMM_NULL;
+  if (PetscInitialize(argc, argv, nullptr, help)) return 1;
+  if (PetscPushErrorHandler(CaptureErrorHandler, &log) || MPI_Comm_dup(PETSC_COMM_WORLD, &agree)) return 1;
+  PetscErrorCode ierr;
+  try {
+    ierr = run(&exitcode, &log);
+  } catch (const std::bad_alloc &) {
+    log.messages.push_back("Out of memory");
+    ierr = PETSC_ERR_MEM;
+  } catch (const std::exception &e) {
+    log.messages.push_back(std::string("C++ exception: ") + e.what());
+    ierr = PETSC_ERR_LIB;
+  }
+  if (ierr) return ExitOnError(program, agree, log);
+  MPI_Comm_free(&agree);
+  PetscPopErrorHandler();
+  if (PetscFinalize()) return 1;
+  return exitcode;
+}
+
+} // namespace boltnet
