@@ -1,12 +1,14 @@
 // boltnet shell element kernels (issue 3): pure C++, no PETSc, no global state.
 //
 // A four-node shell with 6 dof per node (u_x, u_y, u_z, theta_x, theta_y, theta_z in global axes):
-// flat-facet MITC4 (Dvorkin-Bathe assumed transverse shear, bilinear membrane and bending) in the
-// mean plane of the four nodes, rigid offsets from the mean plane to the nodes for warped elements,
-// a Hughes-Brezzi drilling term, and resultant constitutive law N, M, Q = [A B; B D], H. See
-// docs/shell.md for the formulation, the sign conventions and the verification.
+// MITC4 (Dvorkin & Bathe 1984) transverse shear, bilinear membrane with Wilson-Taylor incompatible
+// modes, a Hughes-Brezzi drilling term, resultant constitutive law N, M, Q = [A B; B D], H, and
+// director kinematics (kinematics.hpp): bending and transverse shear use the change of nodal
+// directors theta_i x V_i, V_i the element's own normal at node i (the normal of its bilinear surface
+// there) or the mesh's directors. See docs/shell.md for the formulation, the sign conventions and the
+// verification.
 //
-// Conventions (local element frame e1, e2, e3; z along e3, measured from the mid-surface):
+// Conventions (local frame e1, e2, e3 at a point of the mid-surface; z along e3):
 //   displacement through the thickness u(z) = u + z theta x e3, i.e. u_x(z) = u + z theta_y,
 //   u_y(z) = v - z theta_x;
 //   membrane strain  eps = (du/dx, dv/dy, du/dy + dv/dx)                    (engineering shear)
@@ -17,8 +19,9 @@
 // Element node order: counter-clockwise about the intended normal, natural coordinates
 // (xi, eta) = (-1,-1), (1,-1), (1,1), (-1,1). The element normal is e3 = X_xi x X_eta at the centre.
 //
-// Errors (bad material data, a degenerate element) throw std::invalid_argument with a message naming
-// the input; callers inside PETSc callbacks turn them into PETSc errors (lib/core/guard.hpp).
+// Errors (bad material data, a degenerate element, a bad director) throw std::invalid_argument with a
+// message naming the input; callers inside PETSc callbacks turn them into PETSc errors
+// (lib/core/guard.hpp).
 #pragma once
 
 #include <array>
@@ -32,6 +35,7 @@ using Mat3 = std::array<double, 9>;  // 3x3, row-major, Voigt order (xx, yy, xy)
 using Mat2 = std::array<double, 4>;  // 2x2, row-major, order (xz, yz)
 using ElementMatrix = std::array<double, 576>; // 24x24, row-major, dof 6*node + component
 using ElementVector = std::array<double, 24>;
+using Directors = std::array<Vec3, 4>;         // nodal directors of a quadrilateral (unit or not)
 
 /* One ply of a laminate: fibre angle (degrees, about the shell normal, from the material reference
    direction), thickness, and the orthotropic ply moduli in the ply axes (1 = fibre). */
@@ -77,40 +81,54 @@ ElementFrame MakeElementFrame(const Nodes &X);
    near 1 the penalty stiffens coarse meshes of curved shells. */
 constexpr double kDefaultDrill = 1e-2;
 
-/* Membrane interpolation: Bilinear (the plain bilinear membrane of MITC4), or Incompatible: bilinear
+/* Quadrilateral membrane: Bilinear (the plain bilinear membrane of MITC4), or Incompatible: bilinear
    enriched with the Wilson-Taylor incompatible modes 1 - xi^2, 1 - eta^2 (QM6, condensed inside the
    element, Taylor's correction so that the patch test passes on any quadrilateral), which removes
    the bilinear membrane's locking in in-plane bending. */
 enum class Membrane { Bilinear, Incompatible };
 
+/* Quadrilateral geometry: Directors (default) uses the bilinear mid-surface through the nodes and the
+   director kinematics, exact for rigid motions and blind to rotations about the directors; RigidLinks
+   is the flat element in the mean plane tied to the nodes by rigid offsets (MacNeal's warping
+   correction), the formulation before the director kinematics, kept for comparison: on twisted
+   shells its drilling rotation leaks into bending and the answer depends on the drilling factor
+   (docs/shell.md, "Warped elements"). Identical on flat elements. */
+enum class Warping { Directors, RigidLinks };
+
 struct ElementOptions {
   double drill = kDefaultDrill; // >= 0, scales the Hughes-Brezzi drilling penalty
   Membrane membrane = Membrane::Incompatible;
+  Warping warping = Warping::Directors;
 };
 
 /* 24x24 element stiffness in global coordinates, dof order (u_x, u_y, u_z, th_x, th_y, th_z) per
-   node. Throws std::invalid_argument on a degenerate element or a negative drilling factor. */
+   node; V: nodal directors (nullptr: the element's own normals; normalised here; each within 84 deg
+   of the element normal). Throws std::invalid_argument on a degenerate element, a bad director or a
+   negative drilling factor. */
+void ElementStiffness(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K);
 void ElementStiffness(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K);
 /* The same with the default options but the given drilling factor. */
 void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, ElementMatrix &K);
 
 /* Consistent nodal forces for a force per unit area q (global vector: self weight, a distributed
-   load), integrated over the bilinear surface. Rotation entries are zero. */
+   load), integrated over the mid-surface (bilinear for the quadrilateral). Rotation entries are zero. */
 void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F);
 
-/* Consistent nodal forces for a pressure p acting along +n, n the unit normal of the bilinear surface
-   oriented like e3 (n dA = X_xi x X_eta dxi deta). */
+/* Consistent nodal forces for a pressure p acting along +n, n the unit normal of the mid-surface
+   oriented like e3 (quadrilateral: n dA = X_xi x X_eta dxi deta). */
 void ElementPressure(const Nodes &X, double p, ElementVector &F);
 
-/* Generalised strains at (xi, eta) in the element frame (e1, e2) from global nodal displacements:
-   membrane strain (with the condensed incompatible modes when options.membrane is Incompatible),
-   curvature, MITC4 transverse shear, and the drilling defect theta_z - omega
-   (omega = (dv/dx - du/dy) / 2). */
+/* Generalised strains at a point of the element, in the local frame there (e1 = the element's e1
+   projected on the tangent plane; the element frame on a flat element), from global nodal
+   displacements: membrane strain (with the condensed incompatible modes), curvature, the MITC4
+   transverse shear, and the drilling defect theta . n - omega (omega = (dv/dx - du/dy) / 2). */
 struct GeneralisedStrains {
   std::array<double, 3> membrane, curvature;
   std::array<double, 2> shear;
   double drill;
 };
+GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options,
+                                  const ElementVector &u, double xi, double eta);
 GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options,
                                   const ElementVector &u, double xi, double eta);
 /* The nodal (compatible, bilinear) part only: no material needed. */
