@@ -134,13 +134,16 @@ TEST(ShellMaterial, BadLaminateRejected)
   EXPECT_NE(message([] { IsotropicMaterial(-1, 0.3, 1); }).find("E = -1"), std::string::npos);
 }
 
-// Requirement: the element stiffness is symmetric (warped element, laminate with B coupling).
+// Requirement: the element stiffness is symmetric (warped element, laminate with B coupling, both
+// membranes, the director kinematics and the rigid-link formulation it replaced).
 TEST(ShellElement, StiffnessSymmetric)
 {
   const ShellMaterial m = LaminateMaterial({Carbon(0, 0.1), Carbon(45, 0.1), Carbon(90, 0.1)});
+  for (Warping warping : {Warping::Directors, Warping::RigidLinks})
   for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
     ElementOptions o;
     o.membrane = membrane;
+    o.warping = warping;
     ElementMatrix K;
     ElementStiffness(WarpedElement(), m, o, K);
     const double s = MaxAbs(K);
@@ -150,14 +153,17 @@ TEST(ShellElement, StiffnessSymmetric)
 }
 
 // Requirement: the six rigid-body motions (3 translations, 3 rotations about an arbitrary point) give
-// zero nodal forces to round-off on a warped element (both membranes, isotropic and laminate).
+// zero nodal forces to round-off on a warped element (both membranes, isotropic and laminate, director
+// kinematics and rigid links).
 TEST(ShellElement, RigidBodyModes)
 {
   const Nodes X = WarpedElement();
   for (const ShellMaterial &m : {IsotropicMaterial(70000, 0.3, 0.05), LaminateMaterial({Carbon(0), Carbon(90)})})
+  for (Warping warping : {Warping::Directors, Warping::RigidLinks})
   for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
     ElementOptions o;
     o.membrane = membrane;
+    o.warping = warping;
     ElementMatrix K;
     ElementStiffness(X, m, o, K);
     const double s = MaxAbs(K);
@@ -190,14 +196,16 @@ TEST(ShellElement, RigidBodyModes)
 }
 
 // Requirement: no spurious zero-energy mode: exactly 6 zero eigenvalues (Jacobi eigenvalues of K), with
-// either membrane and a small or a large drilling factor.
+// either membrane, either warping treatment and a small or a large drilling factor.
 TEST(ShellElement, ExactlySixZeroEigenvalues)
 {
   for (double drill : {kDefaultDrill, 1.0})
+  for (Warping warping : {Warping::Directors, Warping::RigidLinks})
   for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
     ElementOptions o;
     o.drill = drill;
     o.membrane = membrane;
+    o.warping = warping;
     ElementMatrix K;
     ElementStiffness(WarpedElement(), IsotropicMaterial(70000, 0.3, 0.05), o, K);
     // Cyclic Jacobi on the 24x24 symmetric matrix.
@@ -260,7 +268,8 @@ TEST(ShellElement, ConsistentLoads)
   EXPECT_NEAR(F[0], 0, 1e-15);
 }
 
-// Requirement: a degenerate element is rejected with a message, not a silent NaN.
+// Requirement: a degenerate element, a negative drilling factor and nodal directors handed to the
+// rigid-link formulation (which has none) are rejected with a message, not a silent NaN.
 TEST(ShellElement, DegenerateRejected)
 {
   const Nodes X{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 0, 0}};
@@ -270,6 +279,10 @@ TEST(ShellElement, DegenerateRejected)
   EXPECT_THROW(ElementStiffness(bowtie, IsotropicMaterial(1, 0.3, 0.1), kDefaultDrill, K), std::invalid_argument);
   const Nodes square{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{1, 1, 0}, Vec3{0, 1, 0}};
   EXPECT_THROW(ElementStiffness(square, IsotropicMaterial(1, 0.3, 0.1), -1.0, K), std::invalid_argument);
+  ElementOptions rigid;
+  rigid.warping = Warping::RigidLinks;
+  const Directors V{Vec3{0, 0, 1}, Vec3{0, 0, 1}, Vec3{0, 0, 1}, Vec3{0, 0, 1}};
+  EXPECT_THROW(ElementStiffness(square, &V, IsotropicMaterial(1, 0.3, 0.1), rigid, K), std::invalid_argument);
 }
 
 namespace {
@@ -325,13 +338,16 @@ TEST(ShellElement, ObjectiveUnderRotation)
 }
 
 // Requirement: the stiffness does not depend on which node is numbered first (the element frame e1
-// changes; the material direction is projected into it): cyclic renumbering permutes K, nothing else.
+// changes; the material direction is projected on each point's tangent plane): cyclic renumbering
+// permutes K, nothing else.
 TEST(ShellElement, NodeNumberingInvariant)
 {
   const Nodes X = WarpedElement();
+  for (Warping warping : {Warping::Directors, Warping::RigidLinks})
   for (Membrane membrane : {Membrane::Incompatible, Membrane::Bilinear}) {
     ElementOptions o;
     o.membrane = membrane;
+    o.warping = warping;
     ElementMatrix K;
     ElementStiffness(X, AnglePly(), o, K);
     const double s = MaxAbs(K);

@@ -1,5 +1,6 @@
-// The four-node flat-facet MITC4 shell element (see shell.hpp and docs/shell.md).
-#include "shell/shell.hpp"
+// The four-node shell element: MITC4 with director kinematics (see shell.hpp, kinematics.hpp and
+// docs/shell.md).
+#include "shell/kinematics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,18 +8,12 @@
 
 namespace boltnet::shell {
 
+using namespace detail;
+
 namespace {
 
 constexpr double kXi[4] = {-1, 1, 1, -1}, kEta[4] = {-1, -1, 1, 1};
 constexpr double kGauss = 0.57735026918962576451; // 1/sqrt(3)
-
-Vec3 Sub(const Vec3 &a, const Vec3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double Dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3 Cross(const Vec3 &a, const Vec3 &b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double Norm(const Vec3 &a) { return std::sqrt(Dot(a, a)); }
 
 struct Shape {
   double N[4], dxi[4], deta[4];
@@ -28,184 +23,145 @@ Shape ShapeAt(double xi, double eta)
 {
   Shape s;
   for (int i = 0; i < 4; ++i) {
-    s.N[i] = 0.25 * (1 + kXi[i] * xi) * (1 + kEta[i] * eta);
-    s.dxi[i] = 0.25 * kXi[i] * (1 + kEta[i] * eta);
+    s.N[i]    = 0.25 * (1 + kXi[i] * xi) * (1 + kEta[i] * eta);
+    s.dxi[i]  = 0.25 * kXi[i] * (1 + kEta[i] * eta);
     s.deta[i] = 0.25 * kEta[i] * (1 + kXi[i] * xi);
   }
   return s;
 }
 
-// Local dof order per node: u, v, w, theta_x, theta_y, theta_z (element frame).
-enum { U = 0, V = 1, W = 2, TX = 3, TY = 4, TZ = 5 };
-
-// Strain-displacement rows at one point of the flat element, local dofs.
-struct BMatrix {
-  double m[3][24] = {}, b[3][24] = {}, s[2][24] = {}, d[24] = {};
-  double detJ = 0;
+// The element: nodes, unit nodal directors, the element frame.
+struct Quad {
+  Nodes        X;
+  Directors    V;
+  ElementFrame f;
 };
 
-// Covariant transverse shear rows (gamma_xi, gamma_eta) at (xi, eta):
-// gamma_xi = dw/dxi + theta_y x_xi - theta_x y_xi (likewise for eta).
-void CovariantShear(const ElementFrame &f, double xi, double eta, double row_xi[24], double row_eta[24])
+void Tangents(const Nodes &X, const Shape &s, Vec3 &axi, Vec3 &aeta)
+{
+  axi = aeta = Vec3{0, 0, 0};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) {
+      axi[k] += s.dxi[i] * X[i][k];
+      aeta[k] += s.deta[i] * X[i][k];
+    }
+}
+
+// Directors: the caller's (a smooth surface's normals shared by neighbours), or the element's own
+// normals at its corners (X_xi x X_eta there; all equal to e3 on a flat element).
+Quad MakeQuad(const Nodes &X, const Directors *V)
+{
+  Quad q{X, {}, MakeElementFrame(X)};
+  for (int i = 0; i < 4; ++i) {
+    if (V) {
+      q.V[i] = CheckedDirector((*V)[i], q.f.e3, i, "quadrilateral");
+      continue;
+    }
+    Vec3 axi, aeta;
+    Tangents(X, ShapeAt(kXi[i], kEta[i]), axi, aeta);
+    const Vec3   c = Cross(axi, aeta);
+    const double n = Norm(c);
+    if (!(n > 0) || !(Dot(c, q.f.e3) > 0))
+      throw std::invalid_argument("Shell element: degenerate or inverted quadrilateral (no normal at node " + std::to_string(i) +
+                                  "); number the nodes counter-clockwise");
+    q.V[i] = Scale(1 / n, c);
+  }
+  return q;
+}
+
+SurfacePoint PointAt(const Quad &q, const Shape &s)
+{
+  Vec3 axi, aeta;
+  Tangents(q.X, s, axi, aeta);
+  return MakeSurfacePoint(axi, aeta, q.f.e1, q.f.e3, "quadrilateral");
+}
+
+// Covariant transverse shear rows (gamma_xi, gamma_eta) at (xi, eta), global dofs.
+void CovariantShear(const Quad &q, double xi, double eta, double row_xi[24], double row_eta[24])
 {
   const Shape s = ShapeAt(xi, eta);
-  double x_xi = 0, y_xi = 0, x_eta = 0, y_eta = 0;
-  for (int i = 0; i < 4; ++i) {
-    x_xi += s.dxi[i] * f.x[i];
-    y_xi += s.dxi[i] * f.y[i];
-    x_eta += s.deta[i] * f.x[i];
-    y_eta += s.deta[i] * f.y[i];
-  }
+  Vec3        axi, aeta, V{0, 0, 0};
+  Tangents(q.X, s, axi, aeta);
+  for (int i = 0; i < 4; ++i) V = Add(V, Scale(s.N[i], q.V[i]));
   for (int i = 0; i < 4; ++i) {
     if (row_xi) {
-      row_xi[6 * i + W] = s.dxi[i];
-      row_xi[6 * i + TY] = s.N[i] * x_xi;
-      row_xi[6 * i + TX] = -s.N[i] * y_xi;
+      AddShearRotation(axi, s.N[i], q.V[i], row_xi, 6 * i + 3);
+      AddShearTranslation(V, s.dxi[i], row_xi, 6 * i);
     }
     if (row_eta) {
-      row_eta[6 * i + W] = s.deta[i];
-      row_eta[6 * i + TY] = s.N[i] * x_eta;
-      row_eta[6 * i + TX] = -s.N[i] * y_eta;
+      AddShearRotation(aeta, s.N[i], q.V[i], row_eta, 6 * i + 3);
+      AddShearTranslation(V, s.deta[i], row_eta, 6 * i);
     }
   }
 }
 
-BMatrix BAt(const ElementFrame &f, double xi, double eta)
+// Strain rows at one point (local frame of the point), global dofs.
+struct Rows {
+  double       m[3][24] = {}, b[3][24] = {}, s[2][24] = {}, d[24] = {};
+  SurfacePoint p;
+};
+
+Rows RowsAt(const Quad &q, double xi, double eta)
 {
-  BMatrix B;
+  Rows        B;
   const Shape s = ShapeAt(xi, eta);
-  double J[2][2] = {};
+  B.p           = PointAt(q, s);
+  double dN[4][2];
+  Vec3   dV[2] = {{0, 0, 0}, {0, 0, 0}};
   for (int i = 0; i < 4; ++i) {
-    J[0][0] += s.dxi[i] * f.x[i];
-    J[0][1] += s.dxi[i] * f.y[i];
-    J[1][0] += s.deta[i] * f.x[i];
-    J[1][1] += s.deta[i] * f.y[i];
+    Cartesian(B.p, s.dxi[i], s.deta[i], dN[i]);
+    for (int l = 0; l < 2; ++l) dV[l] = Add(dV[l], Scale(dN[i][l], q.V[i]));
   }
-  B.detJ = J[0][0] * J[1][1] - J[0][1] * J[1][0];
-  if (!(B.detJ > 0))
-    throw std::invalid_argument("Shell element: degenerate or inverted quadrilateral (Jacobian determinant " +
-                                std::to_string(B.detJ) + " at a Gauss point); number the nodes counter-clockwise");
-  const double Ji[2][2] = {{J[1][1] / B.detJ, -J[0][1] / B.detJ}, {-J[1][0] / B.detJ, J[0][0] / B.detJ}};
   for (int i = 0; i < 4; ++i) {
-    const double dx = Ji[0][0] * s.dxi[i] + Ji[0][1] * s.deta[i];
-    const double dy = Ji[1][0] * s.dxi[i] + Ji[1][1] * s.deta[i];
-    B.m[0][6 * i + U] = dx;
-    B.m[1][6 * i + V] = dy;
-    B.m[2][6 * i + U] = dy;
-    B.m[2][6 * i + V] = dx;
-    B.b[0][6 * i + TY] = dx;
-    B.b[1][6 * i + TX] = -dy;
-    B.b[2][6 * i + TY] = dy;
-    B.b[2][6 * i + TX] = -dx;
-    B.d[6 * i + TZ] = s.N[i];
-    B.d[6 * i + V] = -0.5 * dx;
-    B.d[6 * i + U] = 0.5 * dy;
+    AddMembrane(B.p, dN[i], &B.m[0][0], 24, 6 * i);
+    AddDirectorBending(B.p, dN[i], q.V[i], &B.b[0][0], 24, 6 * i + 3);
+    AddDirectorCurvature(dN[i], dV, &B.b[0][0], 24, 6 * i);
+    AddDrill(B.p, s.N[i], dN[i], B.d, 6 * i, 6 * i + 3);
   }
   // MITC4: gamma_xi tied at (0, +-1), gamma_eta at (+-1, 0), interpolated linearly across.
   double A[24] = {}, Bt[24] = {}, C[24] = {}, Dt[24] = {};
-  CovariantShear(f, 0, 1, A, nullptr);
-  CovariantShear(f, 0, -1, Bt, nullptr);
-  CovariantShear(f, 1, 0, nullptr, C);
-  CovariantShear(f, -1, 0, nullptr, Dt);
+  CovariantShear(q, 0, 1, A, nullptr);
+  CovariantShear(q, 0, -1, Bt, nullptr);
+  CovariantShear(q, 1, 0, nullptr, C);
+  CovariantShear(q, -1, 0, nullptr, Dt);
   for (int k = 0; k < 24; ++k) {
-    const double gxi = 0.5 * (1 + eta) * A[k] + 0.5 * (1 - eta) * Bt[k];
+    const double gxi  = 0.5 * (1 + eta) * A[k] + 0.5 * (1 - eta) * Bt[k];
     const double geta = 0.5 * (1 + xi) * C[k] + 0.5 * (1 - xi) * Dt[k];
-    // gamma_xi = x_xi gamma_x + y_xi gamma_y (likewise eta): Cartesian = J^-1 covariant.
-    B.s[0][k] = Ji[0][0] * gxi + Ji[0][1] * geta;
-    B.s[1][k] = Ji[1][0] * gxi + Ji[1][1] * geta;
+    double       g[2];
+    Cartesian(B.p, gxi, geta, g);
+    B.s[0][k] = g[0];
+    B.s[1][k] = g[1];
   }
   return B;
 }
 
-// Per node: local dofs = M global dofs, M = W diag(R, R) with R the rows e1, e2, e3 and W the rigid
-// offset from the node to its projection on the mean plane (u_f = u - h theta_y, v_f = v + h theta_x).
-using NodeTransform = std::array<double, 36>;
-
-std::array<NodeTransform, 4> Transforms(const ElementFrame &f)
-{
-  std::array<NodeTransform, 4> T{};
-  const Vec3 *R[3] = {&f.e1, &f.e2, &f.e3};
-  for (int n = 0; n < 4; ++n) {
-    NodeTransform &M = T[n];
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        M[6 * a + b] = (*R[a])[b];
-        M[6 * (a + 3) + b + 3] = (*R[a])[b];
-      }
-    for (int b = 0; b < 3; ++b) {
-      M[6 * U + 3 + b] -= f.h[n] * f.e2[b];       // - h theta_y
-      M[6 * V + 3 + b] += f.h[n] * f.e1[b];       // + h theta_x
-    }
-  }
-  return T;
-}
-
-// Section in the element frame: the material reference direction projected on the element plane.
-ShellMaterial ElementSection(const ElementFrame &f, const ShellMaterial &mat)
-{
-  const Vec3 &r = mat.direction;
-  const double c = Dot(r, f.e1), s = Dot(r, f.e2);
-  if (std::hypot(c, s) <= 1e-8 * Norm(r)) return mat; // direction along the normal: use e1
-  return RotateMaterial(mat, std::atan2(s, c));
-}
-
-} // namespace
-
-ElementFrame MakeElementFrame(const Nodes &X)
-{
-  ElementFrame f;
-  Vec3 gxi{}, geta{};
-  f.centre = {0, 0, 0};
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) {
-      f.centre[k] += 0.25 * X[i][k];
-      gxi[k] += 0.25 * kXi[i] * X[i][k];
-      geta[k] += 0.25 * kEta[i] * X[i][k];
-    }
-  const Vec3 n = Cross(gxi, geta);
-  const double nn = Norm(n), lx = Norm(gxi), ly = Norm(geta);
-  if (!(nn > 1e-12 * lx * ly) || !(lx > 0) || !std::isfinite(nn))
-    throw std::invalid_argument("Shell element: degenerate quadrilateral (zero area or coincident nodes)");
-  for (int k = 0; k < 3; ++k) {
-    f.e3[k] = n[k] / nn;
-    f.e1[k] = gxi[k] / lx;
-  }
-  f.e2 = Cross(f.e3, f.e1);
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 d = Sub(X[i], f.centre);
-    f.x[i] = Dot(d, f.e1);
-    f.y[i] = Dot(d, f.e2);
-    f.h[i] = Dot(d, f.e3);
-  }
-  return f;
-}
-
-namespace {
-
 // The incompatible-mode membrane rows (QM6, Wilson-Taylor): modes 1 - xi^2 and 1 - eta^2 for u and v,
-// amplitudes (a1u, a2u, a1v, a2v). Derivatives use the centre Jacobian J0 and are scaled by
-// det J0 / det J (Taylor's correction), so that their integral over the element vanishes and the
-// patch test passes on any quadrilateral.
-void IncompatibleRows(const ElementFrame &f, double xi, double eta, double detJ, double G[3][4])
+// amplitudes (a1u, a2u, a1v, a2v) along the centre frame's axes. Derivatives use the centre Jacobian
+// J0 and are scaled by det J0 / det J (Taylor's correction), so that their integral over the element
+// vanishes and the patch test passes on any quadrilateral; on a warped element the displacement
+// gradient is then seen in the local frame of the point p (R_nk = e_n(centre) . e_k(p)).
+void IncompatibleRows(const Quad &q, const SurfacePoint &p, double xi, double eta, double G[3][4])
 {
-  const Shape s0 = ShapeAt(0, 0);
-  double J0[2][2] = {};
-  for (int i = 0; i < 4; ++i) {
-    J0[0][0] += s0.dxi[i] * f.x[i];
-    J0[0][1] += s0.dxi[i] * f.y[i];
-    J0[1][0] += s0.deta[i] * f.x[i];
-    J0[1][1] += s0.deta[i] * f.y[i];
+  const SurfacePoint p0 = PointAt(q, ShapeAt(0, 0));
+  const double       r  = p0.detJ / p.detJ;
+  const double       dP[2][2] = {{-2 * xi, 0}, {0, -2 * eta}}; // mode k: (d/dxi, d/deta)
+  double             R[2][2];
+  for (int n = 0; n < 2; ++n)
+    for (int k = 0; k < 2; ++k) R[n][k] = Dot(p0.e[n], p.e[k]);
+  for (int k = 0; k < 2; ++k) { // mode k, amplitude along centre axis c: gradient g_cm = d_m (centre)
+    double d[2];
+    Cartesian(p0, dP[k][0], dP[k][1], d);
+    for (int c = 0; c < 2; ++c) {
+      double e[2][2] = {}; // e_kl = sum_nm R_nk (delta_nc d_m r) R_ml: the gradient seen in p's frame
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b)
+          for (int m = 0; m < 2; ++m) e[a][b] += R[c][a] * r * d[m] * R[m][b];
+      const int col = 2 * c + k; // (a1u, a2u, a1v, a2v)
+      G[0][col]     = e[0][0];
+      G[1][col]     = e[1][1];
+      G[2][col]     = e[0][1] + e[1][0];
+    }
   }
-  const double d0 = J0[0][0] * J0[1][1] - J0[0][1] * J0[1][0], r = d0 / detJ;
-  const double dP[2][2] = {{-2 * xi, 0}, {0, -2 * eta}}; // mode k: (d/dxi, d/deta)
-  double dx[2], dy[2];
-  for (int k = 0; k < 2; ++k) {
-    dx[k] = r * (J0[1][1] * dP[k][0] - J0[0][1] * dP[k][1]) / d0;
-    dy[k] = r * (-J0[1][0] * dP[k][0] + J0[0][0] * dP[k][1]) / d0;
-  }
-  const double rows[3][4] = {{dx[0], dx[1], 0, 0}, {0, 0, dy[0], dy[1]}, {dy[0], dy[1], dx[0], dx[1]}};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 4; ++j) G[i][j] = rows[i][j];
 }
 
 // Solves the 4x4 system A x = b in place (A symmetric positive definite here), for nrhs columns of b.
@@ -232,23 +188,24 @@ void Solve4(double A[4][4], double *b, int nrhs)
     }
 }
 
-// The local stiffness (element frame, flat nodes) KL, and for the incompatible membrane the blocks
-// Kau (4 x 24) and Kaa (4 x 4) before condensation.
-struct LocalStiffness {
-  double KL[24][24] = {}, Kau[4][24] = {}, Kaa[4][4] = {};
+// The stiffness K (global dofs), and for the incompatible membrane the blocks Kau (4 x 24) and Kaa
+// (4 x 4) before condensation.
+struct Stiffness {
+  double K[24][24] = {}, Kau[4][24] = {}, Kaa[4][4] = {};
 };
 
-void Local(const ElementFrame &f, const ShellMaterial &mat, const ElementOptions &o, LocalStiffness &S)
+void Integrate(const Quad &q, const ShellMaterial &mat, const ElementOptions &o, Stiffness &S)
 {
   if (!(o.drill >= 0) || !std::isfinite(o.drill))
     throw std::invalid_argument("Shell element: drilling factor = " + std::to_string(o.drill) + " must be >= 0");
-  const ShellMaterial m = ElementSection(f, mat);
-  const double gamma = o.drill * (m.A[0] + m.A[4] - 2 * m.A[1] + 4 * m.A[8]) / 8;
   const bool qm6 = o.membrane == Membrane::Incompatible;
   for (int g = 0; g < 4; ++g) {
     const double xi = kXi[g] * kGauss, eta = kEta[g] * kGauss;
-    const BMatrix B = BAt(f, xi, eta);
-    const double w = B.detJ; // Gauss weights are 1
+    const Rows   B  = RowsAt(q, xi, eta);
+    const double w  = B.p.detJ; // Gauss weights are 1
+    // The section in the point's frame (the material direction projected on its tangent plane).
+    const ShellMaterial m     = SectionInFrame(mat, B.p.e[0], B.p.e[1]);
+    const double        gamma = o.drill * MembraneShear(m);
     // Generalised stresses per unit dof: S = C E, with E = [m; b] (6 rows) and s (2 rows).
     double NM[6][24] = {}, Q[2][24] = {};
     for (int k = 0; k < 24; ++k) {
@@ -265,11 +222,11 @@ void Local(const ElementFrame &f, const ShellMaterial &mat, const ElementOptions
         double v = gamma * B.d[a] * B.d[b];
         for (int i = 0; i < 3; ++i) v += B.m[i][a] * NM[i][b] + B.b[i][a] * NM[i + 3][b];
         for (int i = 0; i < 2; ++i) v += B.s[i][a] * Q[i][b];
-        S.KL[a][b] += w * v;
+        S.K[a][b] += w * v;
       }
     if (qm6) {
       double G[3][4];
-      IncompatibleRows(f, xi, eta, B.detJ, G);
+      IncompatibleRows(q, B.p, xi, eta, G);
       for (int a = 0; a < 4; ++a) {
         for (int b = 0; b < 24; ++b)
           for (int i = 0; i < 3; ++i) S.Kau[a][b] += w * G[i][a] * NM[i][b]; // G^T (A Bm + B Bb)
@@ -279,7 +236,7 @@ void Local(const ElementFrame &f, const ShellMaterial &mat, const ElementOptions
       }
     }
   }
-  if (qm6) { // static condensation: KL -= Kau^T Kaa^-1 Kau
+  if (qm6) { // static condensation: K -= Kau^T Kaa^-1 Kau
     double X[24 * 4], A[4][4];
     for (int b = 0; b < 24; ++b)
       for (int a = 0; a < 4; ++a) X[4 * b + a] = S.Kau[a][b];
@@ -290,43 +247,109 @@ void Local(const ElementFrame &f, const ShellMaterial &mat, const ElementOptions
       for (int b = 0; b < 24; ++b) {
         double v = 0;
         for (int k = 0; k < 4; ++k) v += S.Kau[k][a] * X[4 * b + k];
-        S.KL[a][b] -= v;
+        S.K[a][b] -= v;
       }
   }
   // Symmetrise (the products above are symmetric up to round-off).
   for (int a = 0; a < 24; ++a)
-    for (int b = a + 1; b < 24; ++b) S.KL[a][b] = S.KL[b][a] = 0.5 * (S.KL[a][b] + S.KL[b][a]);
+    for (int b = a + 1; b < 24; ++b) S.K[a][b] = S.K[b][a] = 0.5 * (S.K[a][b] + S.K[b][a]);
+}
+
+// Warping::RigidLinks: the flat element in the mean plane (nodes projected along e3, director e3),
+// joined to the nodes by rigid links u_flat = u + h (e3 x theta). Per node: flat dofs = T global dofs.
+struct RigidLinks {
+  Quad   flat;
+  double T[4][6][6];
+};
+
+RigidLinks MakeRigidLinks(const Nodes &X)
+{
+  RigidLinks r;
+  const ElementFrame f = MakeElementFrame(X);
+  Nodes              P;
+  for (int i = 0; i < 4; ++i) P[i] = Sub(X[i], Scale(f.h[i], f.e3));
+  r.flat = Quad{P, {f.e3, f.e3, f.e3, f.e3}, MakeElementFrame(P)};
+  for (int i = 0; i < 4; ++i) {
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) r.T[i][a][b] = a == b;
+    const Vec3 &e = f.e3; // (e x theta)_a = sum_b [e]x_ab theta_b
+    const double ex[3][3] = {{0, -e[2], e[1]}, {e[2], 0, -e[0]}, {-e[1], e[0], 0}};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) r.T[i][a][3 + b] = f.h[i] * ex[a][b];
+  }
+  return r;
+}
+
+void CheckNoDirectors(const ElementOptions &o, const Directors *V)
+{
+  if (V && o.warping == Warping::RigidLinks)
+    throw std::invalid_argument("Shell element: Warping::RigidLinks is the flat projected element; it takes no nodal directors");
 }
 
 } // namespace
 
-void ElementStiffness(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K)
+ElementFrame MakeElementFrame(const Nodes &X)
 {
-  const ElementFrame f = MakeElementFrame(X);
-  LocalStiffness S;
-  Local(f, mat, options, S);
-  // K = T^T KL T, node block by node block.
-  const auto T = Transforms(f);
-  for (int p = 0; p < 4; ++p)
-    for (int q = 0; q < 4; ++q) {
-      double tmp[6][6] = {};
-      for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j)
-          for (int k = 0; k < 6; ++k) tmp[i][j] += S.KL[6 * p + i][6 * q + k] * T[q][6 * k + j];
+  ElementFrame f;
+  Vec3         gxi{}, geta{};
+  f.centre = {0, 0, 0};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) {
+      f.centre[k] += 0.25 * X[i][k];
+      gxi[k] += 0.25 * kXi[i] * X[i][k];
+      geta[k] += 0.25 * kEta[i] * X[i][k];
+    }
+  const Vec3   n  = Cross(gxi, geta);
+  const double nn = Norm(n), lx = Norm(gxi), ly = Norm(geta);
+  if (!(nn > 1e-12 * lx * ly) || !(lx > 0) || !std::isfinite(nn))
+    throw std::invalid_argument("Shell element: degenerate quadrilateral (zero area or coincident nodes)");
+  for (int k = 0; k < 3; ++k) {
+    f.e3[k] = n[k] / nn;
+    f.e1[k] = gxi[k] / lx;
+  }
+  f.e2 = Cross(f.e3, f.e1);
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 d = Sub(X[i], f.centre);
+    f.x[i]       = Dot(d, f.e1);
+    f.y[i]       = Dot(d, f.e2);
+    f.h[i]       = Dot(d, f.e3);
+  }
+  return f;
+}
+
+void ElementStiffness(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K)
+{
+  CheckNoDirectors(options, V);
+  Stiffness S;
+  if (options.warping == Warping::Directors) {
+    Integrate(MakeQuad(X, V), mat, options, S);
+    for (int a = 0; a < 24; ++a)
+      for (int b = 0; b < 24; ++b) K[24 * a + b] = S.K[a][b];
+    return;
+  }
+  const RigidLinks r = MakeRigidLinks(X);
+  Integrate(r.flat, mat, options, S);
+  for (int p = 0; p < 4; ++p) // K = T^T K_flat T, node block by node block
+    for (int q = 0; q < 4; ++q)
       for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) {
           double v = 0;
-          for (int k = 0; k < 6; ++k) v += T[p][6 * k + i] * tmp[k][j];
+          for (int k = 0; k < 6; ++k)
+            for (int l = 0; l < 6; ++l) v += r.T[p][k][i] * S.K[6 * p + k][6 * q + l] * r.T[q][l][j];
           K[24 * (6 * p + i) + 6 * q + j] = v;
         }
-    }
+}
+
+void ElementStiffness(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options, ElementMatrix &K)
+{
+  ElementStiffness(X, nullptr, mat, options, K);
 }
 
 void ElementStiffness(const Nodes &X, const ShellMaterial &mat, double drill, ElementMatrix &K)
 {
   ElementOptions o;
   o.drill = drill;
-  ElementStiffness(X, mat, o, K);
+  ElementStiffness(X, nullptr, mat, o, K);
 }
 
 namespace {
@@ -338,12 +361,8 @@ void SurfaceLoad(const Nodes &X, Traction traction, ElementVector &F)
   F.fill(0);
   for (int g = 0; g < 4; ++g) {
     const Shape s = ShapeAt(kXi[g] * kGauss, kEta[g] * kGauss);
-    Vec3        gxi{}, geta{};
-    for (int i = 0; i < 4; ++i)
-      for (int k = 0; k < 3; ++k) {
-        gxi[k] += s.dxi[i] * X[i][k];
-        geta[k] += s.deta[i] * X[i][k];
-      }
+    Vec3        gxi, geta;
+    Tangents(X, s, gxi, geta);
     const Vec3 tdA = traction(Cross(gxi, geta));
     for (int i = 0; i < 4; ++i)
       for (int k = 0; k < 3; ++k) F[6 * i + k] += s.N[i] * tdA[k];
@@ -353,24 +372,31 @@ void SurfaceLoad(const Nodes &X, Traction traction, ElementVector &F)
 
 void ElementLoad(const Nodes &X, const Vec3 &q, ElementVector &F)
 {
-  SurfaceLoad(X, [&q](const Vec3 &ndA) { const double dA = Norm(ndA); return Vec3{q[0] * dA, q[1] * dA, q[2] * dA}; }, F);
+  SurfaceLoad(X, [&q](const Vec3 &ndA) { return Scale(Norm(ndA), q); }, F);
 }
 
 void ElementPressure(const Nodes &X, double p, ElementVector &F)
 {
-  SurfaceLoad(X, [p](const Vec3 &ndA) { return Vec3{p * ndA[0], p * ndA[1], p * ndA[2]}; }, F);
+  SurfaceLoad(X, [p](const Vec3 &ndA) { return Scale(p, ndA); }, F);
 }
 
-GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options,
+GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options,
                                   const ElementVector &u, double xi, double eta)
 {
-  const ElementFrame f = MakeElementFrame(X);
-  const auto T = Transforms(f);
-  double ul[24] = {};
-  for (int n = 0; n < 4; ++n)
-    for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) ul[6 * n + i] += T[n][6 * i + j] * u[6 * n + j];
-  const BMatrix B = BAt(f, xi, eta);
+  CheckNoDirectors(options, V);
+  Quad          q;
+  ElementVector ul = u; // dofs of the element q
+  if (options.warping == Warping::Directors) q = MakeQuad(X, V);
+  else {
+    const RigidLinks r = MakeRigidLinks(X);
+    q                  = r.flat;
+    for (int n = 0; n < 4; ++n)
+      for (int i = 0; i < 6; ++i) {
+        ul[6 * n + i] = 0;
+        for (int j = 0; j < 6; ++j) ul[6 * n + i] += r.T[n][i][j] * u[6 * n + j];
+      }
+  }
+  const Rows         B = RowsAt(q, xi, eta);
   GeneralisedStrains e{};
   for (int k = 0; k < 24; ++k) {
     for (int i = 0; i < 3; ++i) {
@@ -381,8 +407,8 @@ GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, cons
     e.drill += B.d[k] * ul[k];
   }
   if (options.membrane == Membrane::Incompatible) { // recover the condensed amplitudes
-    LocalStiffness S;
-    Local(f, mat, options, S);
+    Stiffness S;
+    Integrate(q, mat, options, S);
     double alpha[4] = {}, A[4][4];
     for (int a = 0; a < 4; ++a) {
       for (int k = 0; k < 24; ++k) alpha[a] -= S.Kau[a][k] * ul[k];
@@ -390,18 +416,24 @@ GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, cons
     }
     Solve4(A, alpha, 1);
     double G[3][4];
-    IncompatibleRows(f, xi, eta, B.detJ, G);
+    IncompatibleRows(q, B.p, xi, eta, G);
     for (int i = 0; i < 3; ++i)
       for (int a = 0; a < 4; ++a) e.membrane[i] += G[i][a] * alpha[a];
   }
   return e;
 }
 
+GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options, const ElementVector &u,
+                                  double xi, double eta)
+{
+  return ElementStrains(X, nullptr, mat, options, u, xi, eta);
+}
+
 GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double xi, double eta)
 {
   ElementOptions o;
   o.membrane = Membrane::Bilinear; // no material: the nodal (compatible) part only
-  return ElementStrains(X, ShellMaterial{}, o, u, xi, eta);
+  return ElementStrains(X, nullptr, ShellMaterial{}, o, u, xi, eta);
 }
 
 } // namespace boltnet::shell
