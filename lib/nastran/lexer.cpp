@@ -139,10 +139,11 @@ bool LineReader::Next(Line &line)
 // ---------------------------------------------------------------------------------------------
 // CardAssembler
 
-void CardAssembler::Fail(const Line &line, int column, const std::string &what) const
+void CardAssembler::Fail(const Line &line, const std::string &card, int column, const std::string &what) const
 {
-  throw Error(files_[line.file] + ":" + std::to_string(line.line) + ": " + (column ? "field " + std::to_string(column) + ": " : "") + what,
-              files_[line.file], line.line, card_.name, column);
+  throw Error(files_[line.file] + ":" + std::to_string(line.line) + ": " + (card.empty() ? "" : card + ", ") +
+                (column ? "field " + std::to_string(column) + ": " : "") + what,
+              files_[line.file], line.line, card, column);
 }
 
 namespace {
@@ -183,7 +184,12 @@ void CardAssembler::Add(const Line &line)
   const bool free = s.find(',') != std::string::npos;
 
   std::vector<std::string> pf; // physical fields: [0] name/continuation, then data, then the marker
-  std::string first;
+  std::string first = free ? Trim(s.substr(0, s.find(','))) : Trim(ExpandTabs(s).substr(0, 8));
+  const bool continuation = first.empty() || first[0] == '+' || first[0] == '*';
+  const bool large = continuation ? (!first.empty() && first[0] == '*') : first.back() == '*';
+  const int  n = large ? 4 : 8;
+  // The card this line belongs to, for messages: the open card for a continuation, else its name.
+  const std::string card = continuation ? (open_ ? card_.name : "") : Upper(large ? first.substr(0, first.size() - 1) : first);
   if (free) {
     size_t start = 0;
     for (;;) {
@@ -192,22 +198,17 @@ void CardAssembler::Add(const Line &line)
       if (c == std::string::npos) break;
       start = c + 1;
     }
-    first = pf[0];
   } else {
     const std::string x = ExpandTabs(s);
     if (x.size() > 80 && !Trim(x.substr(80)).empty())
-      Fail(line, 0, "text beyond column 80 of a small- or large-field line: '" + Trim(x.substr(80)) + "' (Nastran ignores it; use free field for long lines)");
-    first = Trim(x.substr(0, 8));
+      Fail(line, card, 0, "text beyond column 80 of a small- or large-field line: '" + Trim(x.substr(80)) + "' (Nastran ignores it; use free field for long lines)");
   }
-  const bool continuation = first.empty() || first[0] == '+' || first[0] == '*';
-  const bool large = continuation ? (!first.empty() && first[0] == '*') : first.back() == '*';
-  const int  n = large ? 4 : 8;
 
   std::vector<std::string> data(n);
   std::string marker;
   if (free) {
     if (static_cast<int>(pf.size()) > n + 2)
-      Fail(line, n + 3, "a free-field " + std::string(large ? "large-field " : "") + "line holds at most " + std::to_string(n + 2) +
+      Fail(line, card, n + 3, "a free-field " + std::string(large ? "large-field " : "") + "line holds at most " + std::to_string(n + 2) +
                           " fields (name, " + std::to_string(n) + " data fields, continuation); this one has " + std::to_string(pf.size()));
     for (int i = 0; i < n && i + 1 < static_cast<int>(pf.size()); ++i) data[i] = pf[i + 1];
     if (static_cast<int>(pf.size()) == n + 2) marker = pf[n + 1];
@@ -221,18 +222,18 @@ void CardAssembler::Add(const Line &line)
 
   if (!continuation) {
     Finish();
-    std::string name = Upper(large ? first.substr(0, first.size() - 1) : first);
+    const std::string &name = card;
     if (!IsCardName(name))
-      Fail(line, 1, "'" + first + "' is not a card name (a card starts with its name in field 1, a continuation line with a blank field 1, '+' or '*')");
+      Fail(line, "", 1, "'" + first + "' is not a card name (a card starts with its name in field 1, a continuation line with a blank field 1, '+' or '*')");
     card_ = Card{};
     card_.name = name;
     card_.head = Field{first, line.file, line.line, 1};
     open_ = true;
   } else {
-    if (!open_) Fail(line, 1, "continuation line with no card before it");
+    if (!open_) Fail(line, "", 1, "continuation line with no card before it");
     const std::string want = MarkerKey(marker_), got = MarkerKey(first);
     if (!want.empty() && !got.empty() && want != got)
-      Fail(line, 1, "continuation marker '" + first + "' does not match '" + marker_ + "' at the end of the previous line of " + card_.name);
+      Fail(line, card, 1, "continuation marker '" + first + "' does not match '" + marker_ + "' at the end of the previous line");
     // Two large-field lines make one small-field line: a small line after an odd number of large
     // lines starts a new group of eight.
     if (!large)

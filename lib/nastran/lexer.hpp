@@ -65,7 +65,7 @@ private:
   Card                            card_;
   bool                            open_ = false;
   std::string                     marker_; // continuation marker of the card's last line
-  [[noreturn]] void Fail(const Line &line, int column, const std::string &what) const;
+  [[noreturn]] void Fail(const Line &line, const std::string &card, int column, const std::string &what) const;
 };
 
 // Strips a '$' comment (outside quotes) and trailing blanks and carriage returns.

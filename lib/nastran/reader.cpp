@@ -168,7 +168,7 @@ Deck ReadDeck(const std::string &path, const ReadOptions &options)
   }
   cards.Finish();
   if (section != Section::Bulk)
-    throw Error(d.files[0] + ": the deck has CEND but no BEGIN BULK: there is no bulk data", d.files[0], 0, "", 0);
+    throw Error(d.Where(Source{l.file, l.line, -1}) + ": the deck ends here, and it has CEND but no BEGIN BULK: there is no bulk data", d.files[l.file], l.line, "", 0);
   cc.Finish(had_case_control);
   if (after) d.notes.push_back(d.Where(end_at) + ": " + std::to_string(after) + " lines after ENDDATA are ignored (as Nastran does)");
   if (!d.sol.empty() && d.sol != "101" && d.sol != "SESTATIC")
