@@ -24,3 +24,21 @@ boltnet_expect(nastran_summary_unused_option 1 --fail --match "option\\(s\\) giv
   -- ${_ns} -nastran_deck ${_nd}/cards.bdf -options_left -nastran_dek x)
 boltnet_expect(nastran_summary_missing_properties 1 --match "1 properties of 1 shells are not PSHELL or PCOMP cards"
   -- ${_ns} -nastran_deck ${_nd}/missing-property.bdf -nastran_allow_missing_properties)
+
+# The bolted wing box of scripts/make-nastran-wingbox (requirements 1, 2 and 5): the same model in
+# small, large and free field (INCLUDE, two subcases, every supported card but CFAST and CONM2). Each
+# summary matches the generator's own count of cards, bounding box, constrained dof and load
+# resultants (computed without the reader), and the three summaries agree.
+set(_wb ${BOLTNET_OUT}/nastran-wingbox)
+add_test(NAME make_nastran_wingbox COMMAND ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-nastran-wingbox ${_wb})
+set_tests_properties(make_nastran_wingbox PROPERTIES FIXTURES_SETUP nastran_wingbox)
+set(_wb_summaries)
+foreach(fmt small large free)
+  add_test(NAME nastran_wingbox_${fmt}
+    COMMAND sh -c "\"$0\" -nastran_deck \"$1/wingbox-$2.bdf\" > \"$1/$2.txt\" && ${BOLTNET_PYTHON} \"$3\" \"$1/manifest.json\" \"$1/$2.txt\""
+            ${_ns} ${_wb} ${fmt} ${CMAKE_CURRENT_SOURCE_DIR}/check_nastran_wingbox.py)
+  set_tests_properties(nastran_wingbox_${fmt} PROPERTIES FIXTURES_REQUIRED nastran_wingbox FIXTURES_SETUP nastran_wingbox_${fmt} ENVIRONMENT "${BOLTNET_ENV}")
+  list(APPEND _wb_summaries ${_wb}/${fmt}.txt)
+endforeach()
+add_test(NAME nastran_wingbox_formats_agree COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_nastran_wingbox.py --same ${_wb_summaries})
+set_tests_properties(nastran_wingbox_formats_agree PROPERTIES FIXTURES_REQUIRED "nastran_wingbox_small;nastran_wingbox_large;nastran_wingbox_free")

@@ -27,7 +27,7 @@ namespace {
 std::string G(double v)
 {
   char s[32];
-  std::snprintf(s, sizeof s, "%.9g", v == 0 ? 0.0 : v); // no "-0"
+  std::snprintf(s, sizeof s, "%.12g", v == 0 ? 0.0 : v); // no "-0"
   return s;
 }
 
