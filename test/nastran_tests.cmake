@@ -42,3 +42,7 @@ foreach(fmt small large free)
 endforeach()
 add_test(NAME nastran_wingbox_formats_agree COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_nastran_wingbox.py --same ${_wb_summaries})
 set_tests_properties(nastran_wingbox_formats_agree PROPERTIES FIXTURES_REQUIRED "nastran_wingbox_small;nastran_wingbox_large;nastran_wingbox_free")
+# scripts/verify-nastran-decks over the generated decks: every deck reads, the table lists them.
+boltnet_expect(verify_nastran_decks 1 --match "^\\| wingbox-small.bdf \\| yes \\| CBUSH.nbsp.36 " --match "^\\| wingbox-free-mesh.bdf \\| yes \\|"
+  -- ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/verify-nastran-decks ${_wb} --summary ${_ns})
+set_tests_properties(verify_nastran_decks_np1 PROPERTIES FIXTURES_REQUIRED nastran_wingbox)
