@@ -131,6 +131,7 @@ void Rbe2_(const CardFields &c, Build &b, const Source &src)
       if (e.gm.empty() || c.KindOf(k + 1) != Kind::Integer) c.Fail(k, "THRU", "THRU needs a grid before and after it");
       const int last = c.Id(k + 1, "GM");
       if (last <= e.gm.back()) c.Fail(k + 1, "GM", "the end of a THRU range must exceed its start");
+      if (last - e.gm.back() > 1000000) c.Fail(k + 1, "GM", "a THRU range of more than 1,000,000 grids (every one must exist)");
       for (int g = e.gm.back() + 1; g <= last; ++g) e.gm.push_back(g);
       ++k;
       continue;

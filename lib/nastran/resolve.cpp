@@ -3,6 +3,7 @@
 // the bad id.
 #include "nastran/build.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <set>
@@ -311,6 +312,9 @@ struct Resolver {
 
   void Constraints()
   {
+    std::vector<int> grid_ids;
+    for (const Grid &g : d.grids) grid_ids.push_back(g.id);
+    std::sort(grid_ids.begin(), grid_ids.end());
     for (const Spc &s : d.spcs) {
       const CardFields c = b.Fields(s.src);
       GridAt(s.grid, s.src, FieldOf(c, s.grid, F(0, 3)), "G");
@@ -321,18 +325,16 @@ struct Resolver {
         GridAt(g, s.src, FieldOf(c, g, F(0, 4)), "G");
         d.spcs.push_back(Spc{s.sid, g, s.dofs, 0, s.src});
       }
-      // Nastran: grids of a THRU range need not exist; those that do not are skipped.
+      // Nastran: grids of a THRU range need not exist; those that do not are skipped. Only the
+      // grids that exist are visited (a range may span the whole id space).
       for (const auto &r : s.ranges) {
-        int found = 0;
-        for (int g = r[0]; g <= r[1]; ++g)
-          if (d.GridIndex(g) >= 0) {
-            d.spcs.push_back(Spc{s.sid, g, s.dofs, 0, s.src});
-            ++found;
-          }
+        const auto lo = std::lower_bound(grid_ids.begin(), grid_ids.end(), r[0]), hi = std::upper_bound(grid_ids.begin(), grid_ids.end(), r[1]);
+        for (auto it = lo; it != hi; ++it) d.spcs.push_back(Spc{s.sid, *it, s.dofs, 0, s.src});
+        const long long found = hi - lo, span = static_cast<long long>(r[1]) - r[0] + 1;
         const int k = FieldOf(c, r[0], F(0, 4));
         if (!found) c.Fail(k, "G", "no grid of the range " + std::to_string(r[0]) + " THRU " + std::to_string(r[1]) + " exists");
-        if (found < r[1] - r[0] + 1)
-          b.Note(s.src, "SPC1 " + std::to_string(s.sid) + ": " + std::to_string(r[1] - r[0] + 1 - found) + " grids of " + std::to_string(r[0]) +
+        if (found < span)
+          b.Note(s.src, "SPC1 " + std::to_string(s.sid) + ": " + std::to_string(span - found) + " grids of " + std::to_string(r[0]) +
                           " THRU " + std::to_string(r[1]) + " do not exist and are skipped");
       }
     }
@@ -365,23 +367,24 @@ struct Resolver {
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) l.basic[j] += l.scale * l.n[i] * dir[i][j];
     }
+    std::vector<int> shell_ids;
+    for (const Shell &e : d.shells) shell_ids.push_back(e.id);
+    std::sort(shell_ids.begin(), shell_ids.end());
     for (const Build::Pload4 &r : b.pload4) {
       const CardFields c = b.Fields(r.proto.src);
       if (r.proto.has_direction) Cs(r.proto.cid, r.proto.src, F(1, 2), "CID");
-      int found = 0;
-      for (int eid = r.eid1; eid <= r.eid2; ++eid) {
-        const int s = d.ShellIndex(eid);
-        if (s < 0) continue;
+      const auto lo = std::lower_bound(shell_ids.begin(), shell_ids.end(), r.eid1), hi = std::upper_bound(shell_ids.begin(), shell_ids.end(), r.eid2);
+      for (auto it = lo; it != hi; ++it) {
         Pressure p = r.proto;
-        p.element = eid;
-        p.shell = s;
+        p.element = *it;
+        p.shell = d.ShellIndex(*it);
         d.pressures.push_back(p);
-        ++found;
       }
+      const long long found = hi - lo, span = static_cast<long long>(r.eid2) - r.eid1 + 1;
       if (r.eid1 == r.eid2 && !found) c.Fail(F(0, 3), "EID", "element " + std::to_string(r.eid1) + " is not a CQUAD4 or CTRIA3");
       if (!found) c.Fail(F(0, 3), "EID", "no CQUAD4 or CTRIA3 in " + std::to_string(r.eid1) + " THRU " + std::to_string(r.eid2));
-      if (found < r.eid2 - r.eid1 + 1)
-        b.Note(r.proto.src, "PLOAD4 " + std::to_string(r.proto.sid) + ": " + std::to_string(r.eid2 - r.eid1 + 1 - found) + " ids of " +
+      if (found < span)
+        b.Note(r.proto.src, "PLOAD4 " + std::to_string(r.proto.sid) + ": " + std::to_string(span - found) + " ids of " +
                               std::to_string(r.eid1) + " THRU " + std::to_string(r.eid2) + " are not shells and are skipped");
     }
     std::set<int> direct, combos;
