@@ -62,6 +62,7 @@ const std::string kPlate = "GRID    1               0.      0.      0.\n"
 
 } // namespace
 
+// Requirement 3: a bad number names its field (and says why: an integer where a real is required, ...).
 TEST(Errors, BadNumbers)
 {
   ExpectError("bad-real", "BEGIN BULK\nGRID    1               1.2.3   0.      0.\n", 2, "GRID", 4,
@@ -74,6 +75,7 @@ TEST(Errors, BadNumbers)
   ExpectError("repeated-dof", "BEGIN BULK\n" + kPlate + "SPC1    1       1231    1\n", 8, "SPC1", 3, R"(repeats component 1)");
 }
 
+// Requirement 3: field numbers as they stand on the line, in large and free field and on continuations.
 TEST(Errors, FieldNumbersInEachFormat)
 {
   // Large field: X3 on the continuation line is its field 2; free field: the position in the list.
@@ -84,6 +86,7 @@ TEST(Errors, FieldNumbersInEachFormat)
               R"(CQUAD4 7, field 4 \(TFLAG\): must be 0 \(thicknesses\) or 1)");
 }
 
+// Requirement 3: a missing required field.
 TEST(Errors, MissingRequiredFields)
 {
   ExpectError("blank-grid", "BEGIN BULK\n" + kPlate + "CQUAD4  7       1       1       2       3\n", 8, "CQUAD4", 7, R"(field 7 \(G4\): blank: an integer is required)");
@@ -95,6 +98,7 @@ TEST(Errors, MissingRequiredFields)
               R"(RBE3 5, field 6 \(WT1\): '1' is not a weight \(a real)");
 }
 
+// Requirement 3: references to undefined grids, properties, materials, coordinate systems and sets.
 TEST(Errors, UndefinedReferences)
 {
   ExpectError("undefined-grid", "BEGIN BULK\n" + kPlate + "CQUAD4  7       1       1       2       3       99\n", 8, "CQUAD4", 7, R"(field 7 \(G4\): grid 99 is not defined)");
@@ -114,6 +118,7 @@ TEST(Errors, UndefinedReferences)
               R"(field 3 \(PID\): property 1 is not a PBUSH)");
 }
 
+// Requirements 2 and 3: cycles and degenerate systems, undefined directions, bush axes that Nastran refuses.
 TEST(Errors, CoordinateSystems)
 {
   ExpectError("coord-cycle",
@@ -131,6 +136,7 @@ TEST(Errors, CoordinateSystems)
               R"(the orientation vector is parallel to the line from GA to GB)");
 }
 
+// Requirement 3: duplicate ids name the first definition.
 TEST(Errors, DuplicateIds)
 {
   ExpectError("dup-grid", "BEGIN BULK\n" + kPlate + "GRID    2               5.      0.      0.\n", 8, "GRID", 2, R"(duplicate id: GRID 2 is already defined at .*dup-grid.bdf:3)");
@@ -139,6 +145,7 @@ TEST(Errors, DuplicateIds)
   ExpectError("dup-property", "BEGIN BULK\n" + kPlate + "PBUSH   1       K       1.\n", 8, "PBUSH", 2, R"(duplicate id: PSHELL 1 is already defined)");
 }
 
+// Requirements 1 and 3: malformed lines and continuations.
 TEST(Errors, LinesAndContinuations)
 {
   ExpectError("marker", "BEGIN BULK\n" + S({"CORD2R", "1", "0", "0.", "0.", "0.", "0.", "0.", "1.", "+A"}) + S({"+B", "1.", "0.", "0."}), 3, "CORD2R", 1,
@@ -152,6 +159,7 @@ TEST(Errors, LinesAndContinuations)
               R"(GRID 1, field 2 \(after the last field of GRID\): unexpected data '7')");
 }
 
+// Requirements 1 and 3: case control and INCLUDE errors name the line.
 TEST(Errors, CaseControlAndInclude)
 {
   ExpectError("case-load", "SOL 101\nCEND\nSUBCASE 1\n  LOAD = 5\nBEGIN BULK\n" + kPlate, 4, "LOAD", 0,
@@ -182,6 +190,7 @@ TEST(Errors, CaseControlAndInclude)
   }
 }
 
+// Sections boltnet cannot represent, and conflicting constraints, name the card.
 TEST(Errors, UnsupportedSectionsAndConflicts)
 {
   // A membrane-only PSHELL reads, but it is not a section boltnet's shell can use.
