@@ -128,7 +128,8 @@ PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::
     for (const PartField &p : parts) {
       const PetscInt base = (PetscInt)(x.size() / 3);
       for (const auto &c : p.x) x.insert(x.end(), c.begin(), c.end());
-      for (const auto &q : p.quads) {
+      for (const auto &q : p.elems) {
+        if (q[3] < 0) continue; // triangles are not written yet
         for (int k = 0; k < 4; ++k) quads.push_back(base + q[k]);
         part.push_back(p.id);
       }

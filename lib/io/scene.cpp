@@ -396,7 +396,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
     // Shell patches: a generated plate (corner x, y, z; lx, ly; nx by ny elements) or a Gmsh part.
     std::string          matname;
     shell::ShellMaterial mat;
-    QuadMesh             mesh;
+    ShellMesh            mesh;
     PetscCall(Cell(comm, patches, r, "material", &matname));
     PetscCheck(!matname.empty(), comm, PETSC_ERR_USER_INPUT, "%s line %d: a %s patch needs a material", patches.path.c_str(), patches.lines[r], kind.c_str());
     PetscCall(MaterialFromOptions(comm, matname, &mat));
@@ -420,8 +420,8 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       // A relative mesh path is relative to the patches table that names it.
       const std::string tdir = std::filesystem::path(patches.path).parent_path().string();
       if (!file.empty() && file[0] != '/' && !tdir.empty()) file = tdir + "/" + file;
-      std::map<std::string, QuadMesh> parts;
-      std::string                     why;
+      std::map<std::string, ShellMesh> parts;
+      std::string                      why;
       try {
         parts = ReadGmsh(file);
       } catch (const std::exception &e) {

@@ -102,11 +102,11 @@ PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly a, PetscInt patch, PetscInt 
 }
 
 namespace boltnet {
-PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material)
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckNotSetUp(a));
-  PetscCheck(!mesh.quads.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  PetscCheck(!mesh.elems.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one element", id);
   const PetscInt pos = (PetscInt)a->model.parts.size();
   a->model.parts.push_back(PartDesc{id, PatchKind::Shell, mesh.x[0]});
   ShellPart &sp = a->model.shells[pos];
@@ -118,18 +118,18 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh,
 
 PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
 {
-  QuadMesh             mesh;
+  ShellMesh            mesh;
   shell::ShellMaterial mat;
   PetscFunctionBeginUser;
   PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
   for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
   for (PetscInt e = 0; e < nquads; ++e) {
-    std::array<int, 4> q;
+    MeshElement q;
     for (int k = 0; k < 4; ++k) {
       PetscCheck(quads[4 * e + k] >= 0 && quads[4 * e + k] < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": quadrangle %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT, id, e, quads[4 * e + k], nnodes - 1);
       q[k] = (int)quads[4 * e + k];
     }
-    mesh.quads.push_back(q);
+    mesh.elems.push_back(q);
   }
   PetscCall(Guard(a->comm, [&] {
     mat = shell::IsotropicMaterial(E, nu, t);
