@@ -116,18 +116,25 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh
 }
 } // namespace boltnet
 
-PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+namespace {
+// The shell patch of the C API: 4 entries per element, a triangle's fourth -1 where triangles are
+// allowed (BoltnetAssemblyAddShellPatchElements), every node in range and named once per element.
+PetscErrorCode AddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t, bool triangles)
 {
   ShellMesh            mesh;
   shell::ShellMaterial mat;
+  const char          *what = triangles ? "element" : "quadrangle";
   PetscFunctionBeginUser;
-  PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  PetscCheck(nnodes >= (triangles ? 3 : 4) && nelems >= 1 && xyz && elems, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one %s (it has %" PetscInt_FMT " nodes and %" PetscInt_FMT " elements)", id, what, nnodes, nelems);
   for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
-  for (PetscInt e = 0; e < nquads; ++e) {
-    MeshElement q;
-    for (int k = 0; k < 4; ++k) {
-      PetscCheck(quads[4 * e + k] >= 0 && quads[4 * e + k] < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": quadrangle %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT, id, e, quads[4 * e + k], nnodes - 1);
-      q[k] = (int)quads[4 * e + k];
+  for (PetscInt e = 0; e < nelems; ++e) {
+    MeshElement    q  = {-1, -1, -1, -1};
+    const PetscInt nn = triangles && elems[4 * e + 3] == -1 ? 3 : 4;
+    for (int k = 0; k < nn; ++k) {
+      const PetscInt v = elems[4 * e + k];
+      PetscCheck(v >= 0 && v < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT "%s", id, what, e, v, nnodes - 1, triangles && k < 3 ? "" : triangles ? " (or -1: a triangle)" : "");
+      for (int j = 0; j < k; ++j) PetscCheck(q[j] != v, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT " twice", id, what, e, v);
+      q[k] = (int)v;
     }
     mesh.elems.push_back(q);
   }
@@ -136,6 +143,21 @@ PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, Pets
     return PetscErrorCode(0);
   }));
   PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AddShellPatch(a, id, nnodes, xyz, nquads, quads, E, nu, t, false));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddShellPatchElements(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AddShellPatch(a, id, nnodes, xyz, nelems, elems, E, nu, t, true));
   PetscFunctionReturn(0);
 }
 
