@@ -340,8 +340,8 @@ std::string OneSurface(int type, const std::vector<std::string> &elements)
 #endif
 
 // Requirement: Gmsh parts of 3-node triangles (type 2) and of both kinds are read, with their node
-// sets; other element types in a part, and a triangle naming a node twice, are refused with a message
-// naming the file, the line and the type.
+// sets; other element types in a part, a triangle naming a node twice and a node tag that is not
+// positive are refused with a message naming the file, the line and the type.
 TEST(MeshTriangles, Gmsh)
 {
   const auto tri = ReadGmsh(std::string(BOLTNET_TEST_DATA) + "/triangles.msh");
@@ -365,6 +365,8 @@ TEST(MeshTriangles, Gmsh)
   EXPECT_NE(second.find("test.msh' line 28: element type 9 (6-node triangles) is not supported"), std::string::npos) << second;
   const std::string twice = GmshError(OneSurface(2, {"1 1 2 2"}));
   EXPECT_NE(twice.find("line 29: a triangle names the same node twice"), std::string::npos) << twice;
+  const std::string negative = GmshError(OneSurface(3, {"1 1 2 3 -4"}));
+  EXPECT_NE(negative.find("line 29: element node tag -4 is not positive"), std::string::npos) << negative;
   const std::string hexa = GmshError(OneSurface(5, {"1 1 2 3 4 1 2 3 4"}));
   EXPECT_NE(hexa.find("element type 5 (8-node hexahedra)"), std::string::npos) << hexa;
 }

@@ -169,7 +169,10 @@ std::map<std::string, ShellMesh> ParseGmsh(const std::string &path, const std::s
           std::istringstream ls(r.line());
           r.get<long>(ls, "an element tag");
           std::array<long, 4> q = {-1, -1, -1, -1};
-          for (int k = 0; k < nn; ++k) q[k] = r.get<long>(ls, "element nodes");
+          for (int k = 0; k < nn; ++k) {
+            q[k] = r.get<long>(ls, "element nodes");
+            if (q[k] <= 0) r.fail("element node tag " + std::to_string(q[k]) + " is not positive"); // -1 marks a triangle's fourth
+          }
           if (type == 2 || type == 3)
             for (int a = 0; a < nn; ++a)
               for (int b = a + 1; b < nn; ++b)
