@@ -50,7 +50,8 @@ def main():
             name = max(steps, key=lambda s: np.abs(f["steps"][s]["shells"]["displacement"][...]).max())
         g = f["steps"][name]
         x = f["shells/coordinates"][...]
-        quads = f["shells/quads"][...].astype(int)
+        # Quadrilaterals and triangles (either block may be absent: docs/output.md).
+        elems = [list(e) for name in ("shells/quads", "shells/triangles") if name in f for e in f[name][...].astype(int)]
         u = g["shells/displacement"][...]
         xj = f["joints/coordinates"][...]
         uj = g["joints/displacement"][...]
@@ -64,8 +65,8 @@ def main():
     xd = x + scale * u
     mag = np.linalg.norm(u, axis=1)
     fig, ax = plt.subplots(figsize=(9, 5.5))
-    polys = [xd[q][:, [i, j]] for q in quads]
-    pc = PolyCollection(polys, array=mag[quads].mean(axis=1), cmap="viridis", edgecolors="k", linewidths=0.1)
+    polys = [xd[q][:, [i, j]] for q in elems]
+    pc = PolyCollection(polys, array=np.array([mag[q].mean() for q in elems]), cmap="viridis", edgecolors="k", linewidths=0.1)
     ax.add_collection(pc)
     fig.colorbar(pc, ax=ax, label="|displacement| (mm)")
     mid = 0.5 * ((xj + scale * uj)[0::2] + (xj + scale * uj)[1::2])

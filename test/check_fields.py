@@ -2,6 +2,7 @@
 """Check fields.xdmf + fields.h5 of a boltnet run (docs/output.md).
 
   check_fields.py DIR SCENE_JOINTS_CSV [--ref DIR1 [--rtol R]] [--fixed PART,AXIS,VALUE,DOFS]...
+                  [--elements quad|tri|mixed]
 
 - fields.xdmf parses as XML; every DataItem names a dataset of fields.h5 with exactly the declared
   dimensions, number type and precision; topology sizes agree with NumberOfElements;
@@ -13,7 +14,10 @@
 - --fixed: the nodes of shell part PART whose coordinate AXIS (x, y or z) equals VALUE have zero
   DOFS (colon-separated from ux uy uz rx ry rz, or all) at every step, and some node moves;
 - --ref DIR1: every dataset equals the one in DIR1 (another rank count) to R (default 1e-9) of its
-  quantity's scale (largest magnitude over all steps); integer datasets exactly.
+  quantity's scale (largest magnitude over all steps); integer datasets exactly;
+- --elements quad|tri|mixed: the shells are quadrilaterals (/shells/quads), triangles
+  (/shells/triangles, a grid of Triangle topology in the xdmf) or both, every shell node is a node of
+  some element, and each element's nodes belong to one part.
 """
 import argparse
 import csv
@@ -54,6 +58,7 @@ def main():
     ap.add_argument("--ref")
     ap.add_argument("--rtol", type=float, default=1e-9)
     ap.add_argument("--fixed", action="append", default=[])
+    ap.add_argument("--elements", choices=["quad", "tri", "mixed"])
     args = ap.parse_args()
 
     root = ET.parse(args.dir + "/fields.xdmf").getroot()
@@ -131,15 +136,41 @@ def main():
         fail(f"joint line displacements differ from the jumps of joints.csv by {maxerr:g} (largest jump {scale:g})")
     print(f"check_fields: {len(steps)} steps, {njoints} joints; line endpoints vs jumps: max difference {maxerr:.3g} (largest jump {scale:.3g})")
 
+    # Shell elements: quadrilaterals and triangles, each block with its part ids.
+    blocks = []
+    for conn, part in (("/shells/quads", "/shells/part"), ("/shells/triangles", "/shells/triangle_part")):
+        if conn in h5:
+            blocks.append((h5[conn][:], h5[part][:, 0]))
+    if args.elements:
+        has = {"quad": "/shells/quads" in h5, "tri": "/shells/triangles" in h5}
+        want = {"quad": args.elements in ("quad", "mixed"), "tri": args.elements in ("tri", "mixed")}
+        if has != want:
+            fail(f"--elements {args.elements}: the file holds quadrilaterals {has['quad']}, triangles {has['tri']}")
+        grids = [g for g in root.iter("Grid") if g.find("Topology") is not None and g.find("Topology").get("TopologyType") == "Triangle"]
+        ntri = h5["/shells/triangles"].shape[0] if has["tri"] else 0
+        if len(grids) != (len(steps) if ntri else 0) or any(int(g.find("Topology").get("NumberOfElements")) != ntri for g in grids):
+            fail(f"--elements {args.elements}: {len(grids)} Triangle grids in the xdmf for {len(steps)} steps and {ntri} triangles")
+        x = h5["/shells/coordinates"][:]
+        used = np.zeros(len(x), bool)
+        owner = np.full(len(x), -1)
+        for conn, part in blocks:
+            used[conn.ravel()] = True
+            for e, p in zip(conn, part):
+                if (owner[e] >= 0).any() and (owner[e][owner[e] >= 0] != p).any():
+                    fail(f"an element of part {p} has nodes of another part")
+                    break
+                owner[e] = p
+        if not used.all():
+            fail(f"{(~used).sum()} shell nodes belong to no element")
+        print(f"check_fields: {sum(len(c) for c, _ in blocks)} elements ({ntri} triangles) over {len(x)} nodes, every node used")
+
     # Fixed dof.
     dofnames = ["ux", "uy", "uz", "rx", "ry", "rz"]
     for spec in args.fixed:
         part, axis, value, dofs = spec.split(",")
         dofs = list(range(6)) if dofs == "all" else [dofnames.index(d) for d in dofs.split(":")]
         x = h5["/shells/coordinates"][:]
-        quads = h5["/shells/quads"][:]
-        cellpart = h5["/shells/part"][:, 0]
-        nodes = np.unique(quads[cellpart == int(part)])
+        nodes = np.unique(np.concatenate([conn[cellpart == int(part)].ravel() for conn, cellpart in blocks]))
         nodes = nodes[np.abs(x[nodes, "xyz".index(axis)] - float(value)) < 1e-9]
         if len(nodes) == 0:
             fail(f"--fixed {spec}: no node")

@@ -66,6 +66,13 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly, PetscInt patch
    default), by penalty links (penalty, -coupling_penalty), or to the nearest node (node);
    docs/coupling.md. */
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t);
+/* A shell patch of triangles, quadrilaterals or both (a mixed mesh): nelems elements of four entries
+   each, elems[4*e+k], the nodes counter-clockwise about the intended normal; a triangle gives three
+   nodes and -1 as its fourth entry. Otherwise as BoltnetAssemblyAddShellPatch, which is this
+   function with quadrilaterals only. A node number out of range or named twice in an element is an
+   error naming the patch and the element. On a curved mesh the elements around a node share the
+   mean of their normals as director (-shell_directors, docs/shell.md). */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatchElements(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[]);
 /* A boundary condition on a node set of a shell patch (NULL or "": all its nodes); a force value is
    the total on the set, shared equally by its nodes. */

@@ -66,6 +66,45 @@ std::string Attribute(const char name[], const char type[], const char center[],
   return std::string("      <Attribute Name=\"") + name + "\" AttributeType=\"" + type + "\" Center=\"" + center + "\">\n        " + item + "\n      </Attribute>\n";
 }
 
+// Triangles: a block of their own beside the quadrilaterals, over the same nodes (/shells/triangles
+// and /shells/triangle_part, docs/output.md), and in fields.xdmf a second grid that shares the
+// shells' geometry and nodal attributes. A mesh without triangles writes none of it.
+struct TriangleBlock {
+  std::vector<PetscInt> nodes, part; // 3 per triangle into /shells/coordinates; user patch id
+};
+
+TriangleBlock Triangles(const std::vector<PartField> &parts)
+{
+  TriangleBlock t;
+  PetscInt      base = 0;
+  for (const PartField &p : parts) {
+    for (const auto &e : p.elems) {
+      if (e[3] >= 0) continue;
+      for (int k = 0; k < 3; ++k) t.nodes.push_back(base + e[k]);
+      t.part.push_back(p.id);
+    }
+    base += (PetscInt)p.x.size();
+  }
+  return t;
+}
+
+PetscErrorCode WriteTriangles(PetscViewer v, const TriangleBlock &t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5PushGroup(v, "/shells"));
+  PetscCall(WriteIS(v, "triangles", 3, t.nodes));
+  PetscCall(WriteIS(v, "triangle_part", 1, t.part));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  PetscFunctionReturn(0);
+}
+
+std::string TriangleGrid(const FieldsFile &ff, const std::string &step)
+{
+  return std::string("    <Grid Name=\"shell triangles\" GridType=\"Uniform\">\n") + "      <Topology TopologyType=\"Triangle\" NumberOfElements=\"" + std::to_string(ff.ntriangles) + "\">\n        " + Item("/shells/triangles", ff.ntriangles, 3, true) + "\n      </Topology>\n" +
+         "      <Geometry GeometryType=\"XYZ\">\n        " + Item("/shells/coordinates", ff.nnodes, 3, false) + "\n      </Geometry>\n" + Attribute("part", "Scalar", "Cell", Item("/shells/triangle_part", ff.ntriangles, 1, true)) +
+         Attribute("displacement", "Vector", "Node", Item(step + "/shells/displacement", ff.nnodes, 3, false)) + Attribute("rotation", "Vector", "Node", Item(step + "/shells/rotation", ff.nnodes, 3, false)) + "    </Grid>\n";
+}
+
 // fields.xdmf for the steps written so far, through a temporary file and a rename: the file on disk
 // always describes whole steps of fields.h5.
 PetscErrorCode WriteXdmf(const FieldsFile &ff)
@@ -80,7 +119,7 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
     o << "   <Grid Name=\"step " << step << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
       << "    <Time Value=\"" << step << "\"/>\n"
       << "    <Information Name=\"load\" Value=\"" << load << "\"/>\n";
-    if (ff.nnodes > 0) {
+    if (ff.nquads > 0) {
       o << "    <Grid Name=\"shells\" GridType=\"Uniform\">\n"
         << "      <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << ff.nquads << "\">\n        " << Item("/shells/quads", ff.nquads, 4, true) << "\n      </Topology>\n"
         << "      <Geometry GeometryType=\"XYZ\">\n        " << Item("/shells/coordinates", ff.nnodes, 3, false) << "\n      </Geometry>\n"
@@ -89,6 +128,7 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
         << Attribute("rotation", "Vector", "Node", Item(g + "/shells/rotation", ff.nnodes, 3, false))
         << "    </Grid>\n";
     }
+    if (ff.ntriangles > 0) o << TriangleGrid(ff, g);
     o << "    <Grid Name=\"joints\" GridType=\"Uniform\">\n"
       << "      <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"" << ff.njoints << "\">\n        " << Item("/joints/lines", ff.njoints, 2, true) << "\n      </Topology>\n"
       << "      <Geometry GeometryType=\"XYZ\">\n        " << Item("/joints/coordinates", 2 * ff.njoints, 3, false) << "\n      </Geometry>\n"
@@ -128,7 +168,8 @@ PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::
     for (const PartField &p : parts) {
       const PetscInt base = (PetscInt)(x.size() / 3);
       for (const auto &c : p.x) x.insert(x.end(), c.begin(), c.end());
-      for (const auto &q : p.quads) {
+      for (const auto &q : p.elems) {
+        if (q[3] < 0) continue; // a triangle: TriangleBlock
         for (int k = 0; k < 4; ++k) quads.push_back(base + q[k]);
         part.push_back(p.id);
       }
@@ -140,16 +181,21 @@ PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::
       jl.push_back(2 * (PetscInt)i + 1);
       jid.push_back(lines[i].id);
     }
-    ff->nnodes  = (PetscInt)(x.size() / 3);
-    ff->nquads  = (PetscInt)part.size();
-    ff->njoints = (PetscInt)lines.size();
+    const TriangleBlock tri = Triangles(parts);
+    ff->nnodes     = (PetscInt)(x.size() / 3);
+    ff->nquads     = (PetscInt)part.size();
+    ff->ntriangles = (PetscInt)tri.part.size();
+    ff->njoints    = (PetscInt)lines.size();
     if (ff->nnodes > 0) {
       PetscCall(PetscViewerHDF5PushGroup(v, "/shells"));
       PetscCall(WriteVec(v, "coordinates", 3, x));
-      PetscCall(WriteIS(v, "quads", 4, quads));
-      PetscCall(WriteIS(v, "part", 1, part));
+      if (ff->nquads > 0) {
+        PetscCall(WriteIS(v, "quads", 4, quads));
+        PetscCall(WriteIS(v, "part", 1, part));
+      }
       PetscCall(PetscViewerHDF5PopGroup(v));
     }
+    if (ff->ntriangles > 0) PetscCall(WriteTriangles(v, tri));
     PetscCall(PetscViewerHDF5PushGroup(v, "/joints"));
     PetscCall(WriteVec(v, "coordinates", 3, jx));
     PetscCall(WriteIS(v, "lines", 2, jl));

@@ -42,6 +42,7 @@ PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], PetscBo
 struct FieldsFile {
   std::string dir, scene;
   PetscInt    nnodes = 0, nquads = 0, njoints = 0; // fixed by the first step
+  PetscInt    ntriangles = 0;                      // likewise (a block of their own)
   std::vector<std::pair<PetscInt, PetscReal>> steps; // (step, load factor) written so far
   PetscViewer viewer = nullptr;                      // fields.h5, open from the first step on
 };

@@ -47,6 +47,8 @@ struct AssemblyOptions {
   PetscReal    coupling_radius  = 4.0;
   PetscReal    coupling_reach   = 0;
   PetscReal    coupling_penalty = 1e3;
+  // Curved shell parts: the elements around a node share the mesh's nodal director (docs/shell.md).
+  PetscBool    shell_directors = PETSC_TRUE;
   PetscBool    setfromoptions_called = PETSC_FALSE;
 };
 
@@ -147,7 +149,7 @@ struct _p_BoltnetAssembly {
 namespace boltnet {
 
 // A shell part from a mesh (node sets included) and a section (model/describe.cpp).
-PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material);
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material);
 
 // The network (network/build.cpp): lays the model out, builds and distributes the DMNetwork,
 // builds (and condenses) the operators of the owned patches and seams, the Jacobian and the

@@ -14,7 +14,7 @@ namespace boltnet {
 struct PartField {
   PetscInt                           id; // user patch id
   std::vector<std::array<double, 3>> x;     // reference node coordinates (mm)
-  std::vector<std::array<int, 4>>    quads; // node numbers within the part
+  std::vector<std::array<int, 4>>    elems; // node numbers within the part (a triangle's fourth: -1)
   std::vector<double>                dof;   // 6 per node: ux uy uz rx ry rz (mm, rad)
 };
 
