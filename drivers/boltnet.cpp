@@ -12,7 +12,7 @@ step; open fields.xdmf in ParaView: docs/output.md).\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -help      (every option, with defaults and units)\n\
 \n\
 A long run can keep a checkpoint every N converged steps (-checkpoint_every N) and, killed, go on\n\
-from it with the same command and -restart <output_dir>/checkpoint.h5 (docs/output.md).\n\
+from it with the same command and -restart <output_dir>/checkpoint.h5 (docs/scenes.md).\n\
 \n\
 Options on the command line override the scene file. With -options_left, an option that nothing\n\
 used is an error.\n\n";

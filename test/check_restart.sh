@@ -1,6 +1,6 @@
 #!/bin/bash
 # check_restart.sh: a run killed with SIGKILL after a checkpoint and restarted from it ends with the
-# results of the run that was not interrupted (docs/output.md, "Checkpoint and restart").
+# results of the run that was not interrupted (docs/scenes.md, "Checkpoint and restart").
 #   check_restart.sh MPIEXEC BOLTNET RANKS RESTART_RANKS EVERY REFERENCE_DIR OUT_DIR RTOL [--fields JOINTS_CSV FIELDS_RTOL] -- ARGS...
 # 1. boltnet ARGS -checkpoint_every EVERY on RANKS ranks, in a session of its own; as soon as the first
 #    checkpoint (step EVERY) is on disk every process of the session is killed with SIGKILL. The test

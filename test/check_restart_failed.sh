@@ -1,7 +1,7 @@
 #!/bin/bash
 # check_restart_failed.sh: a restart from a checkpoint written between cut-backs (the load path's
 # position in the middle of a target, with halvings spent) fails where the uninterrupted run failed,
-# after the same steps: the position is restored whole (docs/output.md, "Checkpoint and restart").
+# after the same steps: the position is restored whole (docs/scenes.md, "Checkpoint and restart").
 #   check_restart_failed.sh BOLTNET OUT_DIR -- ARGS...   (ARGS: a run that fails with exit 3)
 set -u
 boltnet=$1 out=$2

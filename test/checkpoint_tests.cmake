@@ -1,4 +1,4 @@
-# Checkpoint and restart (docs/output.md, "Checkpoint and restart"). Included by CMakeLists.txt.
+# Checkpoint and restart (docs/scenes.md, "Checkpoint and restart"). Included by CMakeLists.txt.
 set(_restart ${CMAKE_CURRENT_SOURCE_DIR}/check_restart.sh ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:boltnet_driver>)
 
 # A night's run survives a killed job: fig3a (condensed shell patches, fields) killed with SIGKILL as

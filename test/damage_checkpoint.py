@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Damaged copies of a checkpoint, for the tests that a restart refuses them (docs/output.md).
+"""Damaged copies of a checkpoint, for the tests that a restart refuses them (docs/scenes.md,
+"Checkpoint and restart").
 
   damage_checkpoint.py CHECKPOINT OUTDIR
 

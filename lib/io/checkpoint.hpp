@@ -1,4 +1,4 @@
-// Checkpoint and restart (docs/output.md, "Checkpoint and restart"): the committed state after a
+// Checkpoint and restart (docs/scenes.md, "Checkpoint and restart"): the committed state after a
 // converged load step in an HDF5 file written by every rank through PETSc's HDF5 viewer, and a
 // restart that loads it into a freshly set-up assembly and goes on along the load path, the result
 // files continued as if the run had not stopped.
