@@ -27,6 +27,13 @@ add_test(NAME restart_killed_chain_np2_to_np3
   COMMAND ${_restart} 2 3 10 ${BOLTNET_OUT}/chain_long_np2 ${BOLTNET_OUT}/restart_chain 1e-10
           -- -scene ${BOLTNET_TEST_SCENES}/chain.yaml -load_steps 50)
 set_tests_properties(restart_killed_chain_np2_to_np3 PROPERTIES PROCESSORS 3 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED chain_long_np2)
+# And the other way: written on 3 ranks (the last checkpoint at step 120 of 150; the run goes on to
+# the end), continued on 1 from step 120 in the same directory, against the same reference.
+add_test(NAME restart_chain_np3_to_np1
+  COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n 3 --oversubscribe \"$1\" -scene \"$2\" -load_steps 50 -checkpoint_every 40 -output_dir \"$3\" > \"$3.log\" 2>&1 && \"$0\" -n 1 \"$1\" -scene \"$2\" -load_steps 50 -restart \"$3/checkpoint.h5\" -output_dir \"$3\" >> \"$3.log\" 2>&1 && grep -q 'restart from .* at step 120' \"$3.log\" && ${BOLTNET_PYTHON} \"$4\" \"$5/joints.csv\" \"$3/joints.csv\" 1e-10"
+          ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:boltnet_driver> ${BOLTNET_TEST_SCENES}/chain.yaml ${BOLTNET_OUT}/restart_chain_np3
+          ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/chain_long_np2)
+set_tests_properties(restart_chain_np3_to_np1 PROPERTIES PROCESSORS 3 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED chain_long_np2)
 
 # The load path's position between cut-backs: fig3a with a mechanism at 450 N (kc = 0, as
 # trust_mechanism_named) fails after 8 halvings; its last checkpoint lies between two of them, and the

@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/guard.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/limits.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -50,7 +51,7 @@ PetscErrorCode CheckIdentity(BoltnetAssembly a, const CheckpointIdentity &id, co
     PetscCheck(s.ranks == a->size, a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) was written on %" PetscInt_FMT " rank(s), this run has %d, and the network is laid out differently on them (%" PetscInt_FMT " patches then, %zu now): -patch_max_nodes -1 (automatic) cuts the parts by the number of ranks. Restart on %" PetscInt_FMT " rank(s); a run that may move to another number of ranks needs an explicit -patch_max_nodes", file, s.ranks, a->size, s.npatches, a->layout.patches.size(), s.ranks);
     SETERRQ(a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) belongs to a network laid out differently (%" PetscInt_FMT " patches then, %zu now)", file, s.npatches, a->layout.patches.size());
   }
-  PetscCheck(s.ndof == a->net.ndof_global && s.njoints == (PetscInt)a->layout.joints.size() && s.nsteps >= 1, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: %" PetscInt_FMT " dof, %" PetscInt_FMT " joints and %" PetscInt_FMT " steps, for a network of %" PetscInt_FMT " dof and %zu joints", file, s.ndof, s.njoints, s.nsteps, a->net.ndof_global, a->layout.joints.size());
+  PetscCheck(s.ndof == a->net.ndof_global && s.njoints == (PetscInt)a->layout.joints.size() && s.nsteps >= 1 && s.nsteps <= limits::kMaxLoadSteps, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: %" PetscInt_FMT " dof, %" PetscInt_FMT " joints and %" PetscInt_FMT " steps, for a network of %" PetscInt_FMT " dof and %zu joints", file, s.ndof, s.njoints, s.nsteps, a->net.ndof_global, a->layout.joints.size());
   PetscFunctionReturn(0);
 }
 
@@ -118,7 +119,10 @@ PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, co
   js.util_before.assign(js.size(), 0);
   for (size_t k = 0; k < js.size(); ++k) {
     const PetscScalar *w = r + kRow * k;
-    if (w[0] != (PetscScalar)js.comp[k].id || !(w[3] >= 0 && w[3] <= 4) || !(w[6] >= 0 && w[6] <= 4)) ++bad;
+    if (w[0] != (PetscScalar)js.comp[k].id || !(w[3] >= 0 && w[3] <= 4) || !(w[6] >= 0 && w[6] <= 4)) {
+      ++bad;
+      continue;
+    }
     History h;
     h.slip[0] = w[1], h.slip[1] = w[2], h.state = (int)w[3];
     js.committed[k]  = h;
@@ -144,12 +148,15 @@ PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, co
   a->steps.clear();
   for (PetscInt i = 0; i < s.nsteps; ++i) {
     const PetscScalar *w = r + kStepRow * i;
-    a->steps.push_back(StepInfo{(PetscInt)w[0], w[1], (PetscInt)w[2], (PetscInt)w[3]});
-    bad += a->steps.back().step != i + 1;
+    if (w[0] != i + 1 || !(w[2] >= 0 && w[2] < PETSC_MAX_INT) || !(w[3] >= 0 && w[3] < PETSC_MAX_INT)) {
+      ++bad;
+      break;
+    }
+    a->steps.push_back(StepInfo{i + 1, w[1], (PetscInt)w[2], (PetscInt)w[3]});
   }
   PetscCall(VecRestoreArrayRead(all, &r));
   PetscCall(VecDestroy(&all));
-  PetscCheck(!bad && a->steps.back().load == s.load, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: its steps are not numbered 1 to %" PetscInt_FMT " or do not end at its load factor", file, s.nsteps);
+  PetscCheck(!bad && !a->steps.empty() && a->steps.back().load == s.load, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: its steps are not numbered 1 to %" PetscInt_FMT " or do not end at its load factor", file, s.nsteps);
 
   a->lambda = a->lambda_target = s.load;
   a->force_scale_seen          = s.force_scale_seen;
