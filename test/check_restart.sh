@@ -23,8 +23,11 @@ rm -rf "$out"
 mkdir -p "$out"
 ckpt=$out/checkpoint.h5
 # setsid: the job leads a session of its own, so that the kill reaches every process of it, MPI
-# ranks included, and nothing else.
-setsid "$mpiexec" -n "$ranks" --oversubscribe "$boltnet" "$@" -output_dir "$out" -checkpoint_every "$every" > "$out.killed.log" 2>&1 &
+# ranks included, and nothing else. Open MPI's shared-memory segments and session directory go to a
+# directory of the test's (a killed job cannot remove them), removed after the kill.
+scratch=$out.mpi
+rm -rf "$scratch" && mkdir -p "$scratch"
+OMPI_MCA_btl_vader_backing_directory=$scratch OMPI_MCA_orte_tmpdir_base=$scratch setsid "$mpiexec" -n "$ranks" --oversubscribe "$boltnet" "$@" -output_dir "$out" -checkpoint_every "$every" > "$out.killed.log" 2>&1 &
 job=$!
 trap 'kill -9 -- "-$job" 2> /dev/null' EXIT
 for _ in $(seq 1 12000); do
@@ -37,6 +40,7 @@ kill -9 -- "-$job" 2> /dev/null
 for pid in $(ps -eo pid=,sid= | awk -v s="$job" '$2 == s { print $1 }'); do kill -9 "$pid" 2> /dev/null; done
 wait "$job" 2> /dev/null
 status=$?
+rm -rf "$scratch"
 [ -e "$out/summary.json" ] && die "the run finished before it was killed (exit $status): give it a longer load path"
 [ "$status" -ge 128 ] || die "the killed run exited $status, not by a signal"
 kept=$("$py" -c "import h5py, sys; print(h5py.File(sys.argv[1], 'r').attrs['steps'])" "$ckpt")
