@@ -112,6 +112,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   // A restart loads and checks the checkpoint and the results it continues before it writes anything.
   const std::string dir  = outdir[0] ? std::string(outdir) : "results/" + scene.name;
   const std::string ckpt = ckfile[0] ? std::string(ckfile) : dir + "/checkpoint.h5";
+  if (every > 0 && ckfile[0]) PetscCall(CheckpointCheckFile(comm, ckpt)); // the default's directory is -output_dir
   if (restart[0]) {
     PetscCall(CheckpointLoad(a, ident, restart, &out));
     PetscCall(OutputResume(comm, dir, scene.name, fields, a, &out));

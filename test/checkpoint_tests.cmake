@@ -108,6 +108,11 @@ set_tests_properties(restart_refuses_other_layout_np1 PROPERTIES FIXTURES_REQUIR
 boltnet_expect(restart_refuses_other_output_dir 1 --fail --max-lines 2 --match "Cannot restart: there is no .*ckpt_elsewhere/joints.csv to continue"
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -load_steps 5 -output_dir ${BOLTNET_OUT}/ckpt_elsewhere -restart ${_c3}/checkpoint.h5)
 set_tests_properties(restart_refuses_other_output_dir_np1 PROPERTIES FIXTURES_REQUIRED ckpt_fig3c)
+# A checkpoint that could not be written is named before the run starts, not hours into it.
+boltnet_expect(checkpoint_file_no_directory 1 --fail --max-lines 1 --unchanged ${BOLTNET_OUT}/bad/joints.csv
+  --match "Cannot write the checkpoint .*no-such-dir/c.h5 \\(-checkpoint_file\\): its directory '.*no-such-dir' does not exist"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/bad -checkpoint_every 5
+     -checkpoint_file ${BOLTNET_OUT}/no-such-dir/c.h5)
 boltnet_expect(checkpoint_every_negative 1 --fail --max-lines 1 --match "-checkpoint_every -1 must be >= 0"
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/bad -checkpoint_every -1)
 boltnet_expect(checkpoint_help 1 --match "-checkpoint_every <now 0 : formerly 0>: Write a checkpoint" --match "-restart <now  : formerly >: Go on from this checkpoint"

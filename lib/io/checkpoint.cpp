@@ -260,4 +260,21 @@ PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, 
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode CheckpointCheckFile(MPI_Comm comm, const std::string &file)
+{
+  PetscMPIInt rank;
+  std::string why;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) {
+    const std::string dir = std::filesystem::path(file).parent_path().string();
+    std::error_code   ec;
+    if (!std::filesystem::is_directory(dir.empty() ? "." : dir, ec)) why = "its directory '" + dir + "' does not exist";
+    else if (access(dir.empty() ? "." : dir.c_str(), W_OK) != 0) why = "its directory '" + dir + "' cannot be written: " + std::strerror(errno);
+  }
+  PetscCall(ShareText(comm, &why));
+  PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "Cannot write the checkpoint %s (-checkpoint_file): %s", file.c_str(), why.c_str());
+  PetscFunctionReturn(0);
+}
+
 } // namespace boltnet

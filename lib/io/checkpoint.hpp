@@ -43,6 +43,9 @@ std::string LayoutHash(const Layout &L);
 // rename, so that a job killed during the write leaves the previous checkpoint whole. `out` gives
 // the results so far that summary.json reports (the most loaded joint).
 PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, const Output &out, const std::string &file);
+// Collective: an error now, not at the first checkpoint, when the directory of `file` does not exist
+// or cannot be written.
+PetscErrorCode CheckpointCheckFile(MPI_Comm comm, const std::string &file);
 // Collective, after BoltnetAssemblySetUp and before anything is solved: the state of `file` into the
 // assembly, which the next BoltnetAssemblySolveLoadPath continues (same path: it is checked), and
 // the most loaded joint so far into `out`. A file that is not a whole checkpoint, or that belongs to
