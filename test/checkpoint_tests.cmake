@@ -81,6 +81,12 @@ add_test(NAME restart_refuses_changed_model
   COMMAND sh -c "rm -rf \"$2\" && mkdir -p \"$2\" && cp \"$1\"/fig3c.* \"$2\"/ && \"$0\" -scene \"$2/fig3c.yaml\" -load_steps 2 -checkpoint_every 2 -output_dir \"$2/out\" > /dev/null && sed -i 's/^1,ux,force,1$/1,ux,force,2/' \"$2/fig3c.bcs.csv\" && \"$3\" --fail --max-lines 2 --unchanged \"$2/out/joints.csv\" --match \"was written for another model: the boundary conditions of this scene differ\" -- \"$0\" -scene \"$2/fig3c.yaml\" -load_steps 2 -output_dir \"$2/out\" -restart \"$2/out/checkpoint.h5\""
           $<TARGET_FILE:boltnet_driver> ${BOLTNET_SCENES} ${BOLTNET_OUT}/ckpt_model ${BOLTNET_EXPECT})
 set_tests_properties(restart_refuses_changed_model PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
+# fields.h5 left unreadable (a kill while HDF5 writes a step): refused, naming the way on without
+# fields, which then works.
+add_test(NAME restart_refuses_damaged_fields
+  COMMAND sh -c "rm -rf \"$1\" && \"$0\" -scene \"$2\" -load_steps 2 -checkpoint_every 3 -output_dir \"$1\" > /dev/null && truncate -s 20000 \"$1/fields.h5\" && \"$3\" --fail --max-lines 2 --unchanged \"$1/joints.csv\" --match \"Cannot continue the fields in .*fields.h5: .*\\(-output_fields false restarts without fields\\)\" -- \"$0\" -scene \"$2\" -load_steps 2 -output_dir \"$1\" -restart \"$1/checkpoint.h5\" && \"$3\" --match \"restart from .* at step 6\" --match \"6 steps converged\" -- \"$0\" -scene \"$2\" -load_steps 2 -output_dir \"$1\" -restart \"$1/checkpoint.h5\" -output_fields false"
+          $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/ckpt_fields ${BOLTNET_SCENES}/fig3a.yaml ${BOLTNET_EXPECT})
+set_tests_properties(restart_refuses_damaged_fields PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
 # Another rank count on a network laid out by the rank count (-patch_max_nodes -1, fig3a's plates cut
 # into patches on 2 ranks, whole on 1): refused, naming both counts.
 boltnet_expect(restart_refuses_other_layout 1 --fail --max-lines 2 --unchanged ${_c3a}/joints.csv

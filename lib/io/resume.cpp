@@ -99,6 +99,7 @@ std::string Resume(BoltnetAssembly a, Output *out)
   if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
   if (out->fields && OpenFields(&out->ff, k)) why = "Cannot continue the fields in " + out->dir + "/fields.h5: " + ErrorText(log) + " (-output_fields false restarts without fields)";
   if (why.empty() && out->fields && DropLaterFields(&out->ff, k)) why = "Cannot remove the steps after step " + std::to_string(k) + " from " + out->dir + "/fields.h5: " + ErrorText(log);
+  if (!why.empty()) PetscViewerDestroy(&out->ff.viewer); // a viewer whose file did not open fails to close too: not the error to report
   PetscPopErrorHandler();
   if (!why.empty()) return why;
   for (const StepInfo &s : a->steps) out->ff.steps.emplace_back(s.step, s.load);
@@ -131,7 +132,11 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
     } catch (const std::exception &e) {
       why = std::string("Cannot restart: ") + e.what();
     }
-    if (!why.empty()) OutputDiscard(out);
+    if (!why.empty()) {
+      PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+      OutputDiscard(out);
+      PetscPopErrorHandler();
+    }
   }
   PetscCall(ckpt::ShareText(comm, &why));
   PetscCheck(why.empty(), comm, PETSC_ERR_FILE_UNEXPECTED, "%s", why.c_str());
