@@ -147,6 +147,8 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
 
 } // namespace
 
+std::string FieldsStepGroup(PetscInt step) { return StepGroup(step); }
+
 PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines)
 {
   PetscFunctionBeginUser;

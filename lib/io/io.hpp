@@ -49,6 +49,12 @@ struct FieldsFile {
 // Rank 0 only: the step's fields into fields.h5, then fields.xdmf rewritten for every step so far.
 PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
 PetscErrorCode FieldsClose(FieldsFile *ff);
+// The group of fields.h5 that holds a step's fields ("/steps/000012"): a restart drops those after
+// its checkpoint (io/resume.cpp).
+std::string FieldsStepGroup(PetscInt step);
+
+// The header line of joints.csv (docs/output.md).
+constexpr const char *kJointsHeader = "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2";
 
 // Results, written by rank 0 under dir.
 struct Output {

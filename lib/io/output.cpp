@@ -101,7 +101,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
     ok       = out->csv ? 1 : 0;
     if (ok) {
       errno = 0;
-      if (std::fprintf(out->csv, "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2\n") < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
+      if (std::fprintf(out->csv, "%s\n", kJointsHeader) < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
     }
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));

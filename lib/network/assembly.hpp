@@ -95,6 +95,20 @@ struct StepInfo {
   PetscInt  cutbacks;   // cut-backs needed before this step converged
 };
 
+// Where the load path stands after the last converged step (solver/stepper.cpp): the path's
+// targets are LoadPathTargets(start, ...) (solver/loadpath.hpp); the step being approached is
+// targets[target], from the last converged load factor by increments of sub (0: the whole way to the
+// target, the first attempt; else the increment cut-backs left), after `halved` halvings on the way
+// to it. A checkpoint keeps it, so that a restart goes on exactly where the run stopped
+// (io/checkpoint.hpp).
+struct PathPosition {
+  PetscReal start    = 0;
+  PetscInt  ntargets = 0;
+  PetscInt  target   = 0;
+  PetscReal sub      = 0;
+  PetscInt  halved   = 0;
+};
+
 // One row of results for one joint at one converged step (gathered to rank 0 for output).
 struct JointRecord {
   PetscInt  joint; // user id
@@ -138,6 +152,8 @@ struct _p_BoltnetAssembly {
   PetscReal lambda        = 0; // load factor of the last converged step
 
   // Record of the solve.
+  boltnet::PathPosition          path;
+  PetscBool                      resume = PETSC_FALSE; // the next solve goes on from `path` (a restart)
   std::vector<boltnet::StepInfo> steps;
   PetscInt                       total_cutbacks = 0;
   std::string                    failure; // non-empty after a step failed beyond the cut-back bound

@@ -132,6 +132,20 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   PetscFunctionReturn(0);
 }
 
+// A restart's path must be the one the checkpoint was written on: the same number of targets, and
+// the load factor reached where the saved position says it is (the driver also refuses a checkpoint
+// whose options differ; this guards the library's callers).
+PetscErrorCode CheckResumedPath(BoltnetAssembly a, const std::vector<PetscReal> &targets)
+{
+  const PathPosition &p = a->path;
+  PetscFunctionBeginUser;
+  PetscCheck(p.ntargets == (PetscInt)targets.size(), a->comm, PETSC_ERR_USER_INPUT, "The load path has %zu steps, the checkpoint's had %" PetscInt_FMT ": a restart must follow the path of the run that wrote the checkpoint (-load_path, -load_max, -load_table, -load_steps)", targets.size(), p.ntargets);
+  PetscCheck(p.target >= 0 && p.target <= p.ntargets, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint's position on the load path (step %" PetscInt_FMT " of %" PetscInt_FMT ") is not on it", p.target, p.ntargets);
+  const PetscReal reached = p.target == 0 ? p.start : targets[p.target - 1];
+  PetscCheck(p.sub != 0 || a->lambda == reached, a->comm, PETSC_ERR_USER_INPUT, "The checkpoint's load factor %.17g is not the load path's %.17g at its step %" PetscInt_FMT ": a restart must follow the path of the run that wrote the checkpoint", (double)a->lambda, (double)reached, p.target);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 } // namespace boltnet
 
@@ -143,14 +157,22 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
   PetscFunctionBeginUser;
   PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
   PetscCheck(steps_per_segment >= 1, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "steps_per_segment %" PetscInt_FMT " must be >= 1", steps_per_segment);
-  const std::vector<PetscReal> targets = LoadPathTargets(a->lambda, std::vector<PetscReal>(factors, factors + n), steps_per_segment);
+  // A new path starts from the current state; a restart (io/checkpoint.hpp) goes on along the path
+  // of the run that wrote the checkpoint, from where that run stood.
+  if (!a->resume) a->path = PathPosition{a->lambda, 0, 0, 0, 0};
+  const std::vector<PetscReal> targets = LoadPathTargets(a->path.start, std::vector<PetscReal>(factors, factors + n), steps_per_segment);
+  if (a->resume) PetscCall(CheckResumedPath(a, targets));
+  a->resume        = PETSC_FALSE;
+  a->path.ntargets = (PetscInt)targets.size();
   PetscCall(VecDuplicate(a->X, &Xtry));
-  for (PetscReal target : targets) {
-    PetscReal sub  = target - a->lambda; // current increment, halved on failure
-    PetscInt  cuts = 0;   // cut-backs since the last converged step (recorded with it)
-    PetscInt  halved = 0; // halvings on the way to this target: bounded by -load_max_cuts, and not
-                          // reset by a converged sub-step, else a load the structure cannot carry
-                          // (a mechanism at 450 N) is approached by ever smaller sub-steps forever
+  for (size_t i = (size_t)a->path.target; i < targets.size(); ++i) {
+    const PetscReal target = targets[i];
+    PetscReal sub    = a->path.sub != 0 ? a->path.sub : target - a->lambda; // current increment, halved on failure
+    PetscInt  cuts   = 0;              // cut-backs since the last converged step (recorded with it)
+    PetscInt  halved = a->path.halved; // halvings on the way to this target: bounded by -load_max_cuts,
+                                       // and not reset by a converged sub-step, else a load the structure
+                                       // cannot carry (a mechanism at 450 N) is approached by ever
+                                       // smaller sub-steps forever
     while (a->lambda != target) {
       const PetscBool last = std::abs(target - a->lambda) <= std::abs(sub) * (1 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
       a->lambda_target     = last ? target : a->lambda + sub;
@@ -206,6 +228,9 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         StepInfo info{(PetscInt)a->steps.size() + 1, a->lambda, its, cuts};
         a->steps.push_back(info);
         cuts = 0;
+        // Where the path goes on from here: the next target, or this one by the increment left.
+        if (a->lambda == target) a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i + 1, 0, 0};
+        else a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i, sub, halved};
         if (a->on_step) PetscCall(a->on_step(a, info));
         continue;
       }
