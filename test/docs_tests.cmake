@@ -1,5 +1,5 @@
 # The documentation cannot drift from the code: options tables and defaults against -help, links
-# against the files. Included from
+# against the files, and the foreign-program study against the program. Included from
 # test/CMakeLists.txt (BOLTNET_PYTHON).
 
 # Requirement: every options table between options-doc markers in README.md and docs/*.md is what
@@ -25,3 +25,14 @@ add_test(NAME doc_links_catch_broken
 set_tests_properties(doc_links_catch_broken PROPERTIES PASS_REGULAR_EXPRESSION
   "link to no-such-page.md#x: no such file.*names the page benchmarks.md, which is not in the repository.*\\[exit status 1\\]"
   FAIL_REGULAR_EXPRESSION "link to solver.md")
+
+# Requirement: the table of docs/petsc-plugin.md is what test/foreign_switch gives with each line
+# search (so the doc cannot drift from the line search), with the same numbers on 1 and 2 ranks
+# (the results do not depend on the ranks), and boltnet's two state interfaces (a count,
+# switch indicators) give identical runs. Reference: the program, and the other rank count.
+foreach(ranks 1 2)
+  add_test(NAME foreign_switch_study_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/study-foreign-switch --check --ranks ${ranks} --build ${PROJECT_BINARY_DIR})
+  set_tests_properties(foreign_switch_study_np${ranks} PROPERTIES PROCESSORS ${ranks} TIMEOUT 1200
+    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_btl_vader_single_copy_mechanism=none")
+endforeach()
