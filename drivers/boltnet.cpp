@@ -7,6 +7,7 @@ fields.h5 + fields.xdmf (shell displacement and rotation, joints as lines with t
 step; open fields.xdmf in ParaView: docs/output.md).\n\
 \n\
   mpirun -n 2 build/bin/boltnet -scene share/scenes/fig3c.yaml\n\
+  mpirun -n 2 boltnet -scene fig3c        (installed: the scene share/boltnet/scenes/fig3c.yaml)\n\
   mpirun -n 3 build/bin/boltnet -scene share/scenes/fig3c.yaml -load_steps 4 -joint_monitor\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -joint_bolt_mu 0.3 -output_dir /tmp/mu03\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -help      (every option, with defaults and units)\n\
@@ -18,6 +19,7 @@ Options on the command line override the scene file. With -options_left, an opti
 used is an error.\n\n";
 
 #include "driver.hpp"
+#include "scene_path.hpp"
 #include "io/checkpoint.hpp"
 #include "io/io.hpp"
 #include "io/limits.hpp"
@@ -63,7 +65,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsHasHelp(nullptr, &helpOnly));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-options_left", &optionsLeft, nullptr));
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
-  PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options)", "", file, file, sizeof(file), &hasScene));
+  PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
   PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>)", "", outdir, outdir, sizeof(outdir), nullptr));
   PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5 + fields.xdmf per converged step (shell displacement/rotation, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", fields, &fields, nullptr));
   PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", every, &every, nullptr));
@@ -79,7 +81,9 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     PetscFunctionReturn(0);
   }
   PetscCheck(hasScene, comm, PETSC_ERR_USER_INPUT, "No scene: give -scene <file.yaml> (e.g. -scene share/scenes/fig3c.yaml); -help lists the options");
-  PetscCall(SceneInsertOptionsFile(comm, file, &scene));
+  std::string found;
+  PetscCall(FindScene(comm, file, &found));
+  PetscCall(SceneInsertOptionsFile(comm, found.c_str(), &scene));
   PetscCall(SceneCheckOptionValues(comm));
 
   // Everything is read and checked before anything is written.

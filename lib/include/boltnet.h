@@ -101,6 +101,29 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetLoadFactor(BoltnetAssembly, PetscR
 typedef PetscErrorCode (*BoltnetStateChangeFn)(SNES, Vec ref, Vec x, PetscInt *nchanged, void *ctx);
 PETSC_EXTERN PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction(SNESLineSearch, BoltnetStateChangeFn, void *);
 
+/* A PETSc program that loads the line search as a plugin (-dll_append libboltnet_snes.so) and does not
+   link boltnet gives it its states by composing them on its SNES, at any time before SNESSolve()
+   (docs/petsc-plugin.md has the complete recipe and an example, test/foreign_switch.c):
+
+   - a state-change count, the BoltnetStateChangeFn above (ctx is the SNES's application context,
+     SNESSetApplicationContext()):
+       PetscObjectComposeFunction((PetscObject)snes, "SNESLineSearchBoltnetStateChange_C", fn);
+   - or switch indicators: fn(snes, x, s, ctx) fills s with the values s_i(x) whose signs define the
+     states (s_i > 0 against s_i <= 0: a gap, a yield function, ...; ctx as above), and a Vec with
+     the layout of s (the line search duplicates it):
+       PetscObjectComposeFunction((PetscObject)snes, "SNESLineSearchBoltnetSwitches_C", fn);
+       PetscObjectCompose((PetscObject)snes, "SNESLineSearchBoltnetSwitches", (PetscObject)s);
+     A state change is an indicator that changes sign; the count is summed over ranks.
+
+   SNESLineSearchBoltnetSetStateChangeFunction() takes precedence over both (without boltnet.h: the
+   method "SNESLineSearchBoltnetSetStateChangeFunction_C" that PetscObjectQueryFunction finds on the
+   line search once it has its type); the count takes precedence over the switches. Composing NULL
+   removes them. -snes_view says which one the line search uses. */
+#define SNESLINESEARCHBOLTNET_STATECHANGE  "SNESLineSearchBoltnetStateChange_C"
+#define SNESLINESEARCHBOLTNET_SWITCHES_FN  "SNESLineSearchBoltnetSwitches_C"
+#define SNESLINESEARCHBOLTNET_SWITCHES_VEC "SNESLineSearchBoltnetSwitches"
+typedef PetscErrorCode (*BoltnetSwitchFn)(SNES, Vec x, Vec s, void *ctx);
+
 #if defined(__cplusplus)
 }
 #endif
