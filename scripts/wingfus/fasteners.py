@@ -36,8 +36,9 @@ def axial_k(d, t1, t2, Ef):
 
 
 def laminate_modulus(layup, ply, angle_of_load):
-    """Membrane modulus of a laminate along `angle_of_load` (degrees from the ply reference), by
-    classical lamination theory (docs/shell.md): 1 / (t (A^-1) rotated)."""
+    """Membrane moduli of a laminate along `angle_of_load` (degrees from the ply reference), by
+    classical lamination theory (docs/shell.md): free to contract across, 1 / (t (A^-1)_11), and
+    held across (no transverse strain), A_11 / t, in axes turned to the load direction."""
     E1, E2, nu12, G12 = ply["E1"], ply["E2"], ply["nu12"], ply["G12"]
     nu21 = nu12 * E2 / E1
     den = 1 - nu12 * nu21
@@ -50,7 +51,7 @@ def laminate_modulus(layup, ply, angle_of_load):
         Qb = np.linalg.inv(T) @ Q @ R @ T @ np.linalg.inv(R)
         A += Qb * ply["t"]
     t = ply["t"] * len(layup)
-    return 1 / (t * np.linalg.inv(A)[0, 0])
+    return 1 / (t * np.linalg.inv(A)[0, 0]), A[0, 0] / t
 
 
 class Fastener:
@@ -114,7 +115,7 @@ def place(g, both):
                                             pos=z, d=a.d_spar))
         # Fuselage skin on the tee's stem: rows along x at the lap's odd elements.
         hth = (g.th_top - g.th_e) / (2 * a.fuselage_rows + 1)
-        xf_all = [c for c in fus_centres(g) if g.x_s0 < c < g.x_s1]
+        xf_all = [c for c in g.x_fus.centres() if g.x_s0 < c < g.x_s1]
         kf = max(2, round(a.pitch_fuselage / (g.hx * a.fuselage_coarsening)))
         for r in range(a.fuselage_rows):
             th = g.th_e + (2 * r + 1.5) * hth
@@ -125,10 +126,6 @@ def place(g, both):
                                     family="fu", splice="fuselage_lap", side=side, row=r + 1, index=k + 1, pos=x, d=a.d_fuselage))
         out += attachments(g, s, t, side)
     return out
-
-
-def fus_centres(g):
-    return g.x_fus.centres()
 
 
 def attachments(g, s, t, side):

@@ -85,7 +85,10 @@ class Geometry:
         self.y_strap = self.y_splice_c + Grid([(self.y_ci, self.y_oi, 1)]) + self.y_splice_o
         # Webs (spars, ribs, spar fittings).
         self.hz = (self.z_upcap - self.z_locap) / a.nz
-        self.z_web = Grid([(self.z_locap, self.z_upcap, a.nz)])
+        # One segment per element, so that each element edge of a web's tip is a curve (a node set that
+        # takes its share of the tip load: loads.py).
+        zk = [self.z_locap + (self.z_upcap - self.z_locap) * k / a.nz for k in range(a.nz + 1)]
+        self.z_web = Grid([(zk[k], zk[k + 1], 1) for k in range(a.nz)])
         self.z_fit = Grid([(self.z_locap + self.hz, self.z_upcap - self.hz, a.nz - 2)])
         self.x_fit_front = (self.a.thickness["substructure"] + self.a.thickness["fitting"]) / 2
         self.x_fit_rear = b - self.x_fit_front

@@ -30,7 +30,6 @@ class Part:
         self.curves = {}   # (pa, pb, centre key) -> (tag, n)
         self.curve_pts = {}  # tag -> (start, mid, end) coordinates
         self.surfaces = []
-        self.planar = []
         self.nblocks = 0
 
     def point(self, p):

@@ -4,7 +4,6 @@ Every default is a representative public figure or a stated engineering estimate
 particular aircraft; the help text (make-wing-fuselage --help) and docs/wing-fuselage.md give the
 source or the reasoning of each.
 """
-import argparse
 
 # Size presets: mesh density, rows and bays. The same geometry and loads in every size.
 #   nx: elements along the box chord (front to rear spar; a multiple of 6 x rib and fuselage coarsening)
@@ -23,8 +22,8 @@ SIZES = {
                    fuselage_h=60.0, fuselage_sub=3, stringer_pitch=190.0, rib_coarsening=3, fuselage_coarsening=1,
                    row_spacing_skin=4.5 * 7.94, row_spacing_fuselage=4.5 * 4.8, cap_width=50.0, foot_width=50.0,
                    attach_pitch=4.5 * 6.35, both_sides=False),
-    "full": dict(nx=288, nz=52, rows=5, fuselage_rows=3, fuselage_bays=3, rib_bays=3, coarse=30.0,
-                 fuselage_h=45.0, fuselage_sub=4, stringer_pitch=190.0, rib_coarsening=3, fuselage_coarsening=1,
+    "full": dict(nx=504, nz=78, rows=6, fuselage_rows=4, fuselage_bays=3, rib_bays=3, coarse=20.0,
+                 fuselage_h=30.0, fuselage_sub=6, stringer_pitch=190.0, rib_coarsening=3, fuselage_coarsening=1,
                  row_spacing_skin=4.5 * 7.94, row_spacing_fuselage=4.5 * 4.8, cap_width=50.0, foot_width=50.0,
                  attach_pitch=4.5 * 6.35, both_sides=True),
 }

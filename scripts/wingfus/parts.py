@@ -25,10 +25,6 @@ def mirror(f, s):
     return lambda u, v: (lambda p: (p[0], -p[1], p[2]))(f(u, v))
 
 
-def axis_centre(x, *_):
-    return (x, 0.0, 0.0)
-
-
 def cyl(r, s):
     return mirror(lambda x, th: (x, r * math.cos(th), r * math.sin(th)), s)
 
@@ -114,11 +110,18 @@ def node_sets(name, g, half):
     if name == "fuselage":
         sets["fwd_end"] = lambda p: near(p[0], g.x_min)
         sets["aft_end"] = lambda p: near(p[0], g.x_max)
+    tip = lambda p: near(abs(p[1]), g.y_tip)
     if name.startswith("outer") and ("upper" in name or "lower" in name):
-        sets["tip"] = lambda p: near(abs(p[1]), g.y_tip)
+        sets["tip_front_overhang"] = lambda p: tip(p) and p[0] <= 1e-6
+        sets["tip_box"] = lambda p: tip(p) and -1e-6 <= p[0] <= g.b + 1e-6
+        sets["tip_rear_overhang"] = lambda p: tip(p) and p[0] >= g.b - 1e-6
     if name.startswith("outer") and "sub" in name:
-        sets["tip_front"] = lambda p: near(abs(p[1]), g.y_tip) and near(p[0], 0.0) and g.z_locap - 1e-6 <= p[2] <= g.z_upcap + 1e-6
-        sets["tip_rear"] = lambda p: near(abs(p[1]), g.y_tip) and near(p[0], g.b) and g.z_locap - 1e-6 <= p[2] <= g.z_upcap + 1e-6
+        for spar, x0 in (("front", 0.0), ("rear", g.b)):
+            for k, (z0, z1, _) in enumerate(g.z_web.segs):
+                sets[f"tip_{spar}_web{k}"] = lambda p, x0=x0, z0=z0, z1=z1: tip(p) and near(p[0], x0) and z0 - 1e-6 <= p[2] <= z1 + 1e-6
+            for which, zc in (("upper", g.z_upcap), ("lower", g.z_locap)):
+                inside = (lambda p: p[0] <= 1e-6) if spar == "front" else (lambda p: p[0] >= g.b - 1e-6)
+                sets[f"tip_{spar}_cap_{which}"] = lambda p, zc=zc, inside=inside: tip(p) and near(p[2], zc) and inside(p)
     return sets
 
 

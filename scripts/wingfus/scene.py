@@ -11,8 +11,9 @@ def _num(v):
 
 
 def materials(a):
-    """name -> (YAML mapping text, membrane modulus along the span for Huth's E)."""
-    iso = lambda E, t: (f"{{E: {_num(E)}, nu: 0.33, t: {_num(t)}}}", E)
+    """name -> (YAML mapping text, membrane modulus along the span free to contract across (Huth's
+    E, beam theory's lower bound), and held across (the upper bound))."""
+    iso = lambda E, t: (f"{{E: {_num(E)}, nu: 0.33, t: {_num(t)}}}", E, E / (1 - 0.33 ** 2))
     th = a.thickness
     m = {"fuselage": iso(a.E_fuselage, th["fuselage"]), "substructure": iso(a.E_sub, th["substructure"]),
          "upper_tee": iso(a.E_fitting, th["upper_tee"]), "lower_strap": iso(a.E_fitting, th["lower_strap"]),
@@ -29,7 +30,7 @@ def materials(a):
         ref = [((p + 90 + 90) % 180) - 90 for p in plies]
         txt = (f"{{type: laminate, layup: \"{','.join(_num(p) for p in ref)}\", ply_t: {_num(ply['t'])}, E1: {_num(ply['E1'])}, "
                f"E2: {_num(ply['E2'])}, nu12: {_num(ply['nu12'])}, G12: {_num(ply['G12'])}, G13: {_num(ply['G13'])}, G23: {_num(ply['G23'])}}}")
-        m[f"{which}_skin_outer"] = (txt, laminate_modulus(ref, ply, 90.0))
+        m[f"{which}_skin_outer"] = (txt,) + laminate_modulus(ref, ply, 90.0)
     return m
 
 
@@ -80,7 +81,7 @@ def _thickness_key(material):
     return material
 
 
-def write(out, name, a, g, part_info, fasteners, bcs, types_yaml, mats, model):
+def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
     os.makedirs(out, exist_ok=True)
     base = os.path.join(out, name)
     pid = {p["name"]: k + 1 for k, p in enumerate(part_info)}
