@@ -25,7 +25,6 @@ usage: check_junction_equilibrium.py RESULTS_DIR SCENE.yaml [RTOL]
 import csv
 import json
 import os
-import re
 import sys
 
 import h5py
