@@ -6,7 +6,8 @@
 reads RESULTS_DIR/{joints.csv,summary.json,fields.h5} and the scene's metadata (NAME.fasteners.csv,
 NAME.model.json), and writes into OUT_DIR:
 
-- load-transfer.png: the in-plane load of each fastener along each row of the side-of-body splices
+- load-transfer.png: the load of each fastener (signed: spanwise on the skin splices, vertical
+  on the spar splices, around the fuselage on the lap) along each row of the side-of-body splices
   (upper and lower skins, spars, fuselage lap) at each load level: the classic chart where the end
   fasteners of a row carry most; with --compare, the same model with every fastener a linear spring
   (a run with NAME.linear.opts at load factor 1, scaled to each level) as dashed lines;
@@ -16,6 +17,8 @@ NAME.model.json), and writes into OUT_DIR:
 - most-loaded.csv and most-loaded.png: per row, the most loaded fastener over the load path, its
   margin to slip (1 - |F|/G: negative once it has slid) and to bearing (clearance j minus the slip
   |w|, mm: zero or less when the bolt bears);
+- junction.png: one picture of the run (the upper outer splice and the lap along their rows, the
+  skin splices' states at the highest level, the hysteresis);
 - hysteresis.png: the joint's overall deflection over the load cycle: the rotation across the
   side-of-body joint (from the skins' spanwise displacements on either side of the splices,
   fields.h5) against the load factor, with the linear model.
@@ -58,6 +61,19 @@ def force(r):
     return math.hypot(float(r["f_t1"]), float(r["f_t2"]))
 
 
+def main_load(splice, r):
+    """The load a splice transfers, signed: along the span (t1) for the skin splices, vertical (t2 =
+    n x t1 = z) for the spar splices, around the fuselage (t2) for the lap."""
+    return float(r["f_t1"] if splice.startswith(("upper", "lower")) else r["f_t2"])
+
+
+LABEL = {"skin": "spanwise load f_t1 (kN)", "spar": "vertical load f_t2 (kN)", "lap": "circumferential load f_t2 (kN)"}
+
+
+def label(splice):
+    return LABEL["spar" if "spar" in splice else "lap" if splice == "fuselage_lap" else "skin"]
+
+
 def level_steps(steps, levels):
     """The first step reaching each load level (the peaks of the load path)."""
     out = {}
@@ -92,6 +108,56 @@ def joint_rotation(res, base, model):
     return np.array(loads), np.array(dth)
 
 
+def summary_figure(a, base, model, steps, summary, right, at, lin, lcol, table):
+    """junction.png: the load along the upper outer splice's rows, the states over both skin splices at
+    the highest level, the fuselage lap, the joint's hysteresis: one picture of a run."""
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+    for ax, sp in ((axes[0][0], "upper_outer"), (axes[0][1], "fuselage_lap")):
+        js = [j for j, m in right.items() if m["splice"] == sp]
+        for lv, s in at.items():
+            for k, row in enumerate(sorted({int(right[j]["row"]) for j in js})):
+                jr = sorted((j for j in js if int(right[j]["row"]) == row), key=lambda j: float(right[j]["position"]))
+                pos = [float(right[j]["position"]) for j in jr]
+                ax.plot(pos, [main_load(sp, steps[s][j]) / 1000 for j in jr], color=lcol[lv], marker="os^vD<>"[k % 7], ms=3, lw=1,
+                        label=f"{lv:g} g, row {row}")
+                if lin:
+                    ax.plot(pos, [lv * lin[j][0] / 1000 for j in jr], color=lcol[lv], ls="--", lw=0.8)
+        ax.set_title(f"{sp.replace('_', ' ')}: load of each fastener along its row" + (" (dashed: linear springs)" if lin else ""), fontsize=9)
+        ax.set_xlabel("x along the chord (mm)")
+        ax.set_ylabel(label(sp))
+        ax.grid(alpha=0.3)
+    axes[0][0].legend(fontsize=6, ncol=2)
+    top = max(at, key=abs)
+    ax = axes[1][0]
+    js = [j for j, m in right.items() if m["splice"].startswith(("upper", "lower"))]
+    for j in js:
+        x, y = float(table[j]["x"]), float(table[j]["y"])
+        y += 0 if right[j]["splice"].startswith("upper") else -(model["geometry"]["splice_width"] * 2 + 60)
+        ax.scatter([x], [y], c=STATE.get(steps[at[top]][j]["state"], ("k", ""))[0], s=8)
+    ax.set_title(f"states at {top:g} g: upper skin splice (top), lower (bottom)", fontsize=9)
+    ax.set_xlabel("x along the chord (mm)")
+    ax.set_yticks([])
+    handles = [plt.Line2D([], [], marker="o", ls="", color=c, label=l) for c, l in list(STATE.values())[:3]]
+    ax.legend(handles=handles, fontsize=7, loc="upper right")
+    ax = axes[1][1]
+    if os.path.exists(os.path.join(a.results, "fields.h5")):
+        lam, dth = joint_rotation(a.results, base, model)
+        ax.plot(lam, 1000 * dth, "o-", ms=3, label="frictional fasteners")
+        if a.compare:
+            l2, d2 = joint_rotation(a.compare, base, model)
+            xs = np.array([min(lam), max(lam)])
+            ax.plot(xs, 1000 * d2[-1] / l2[-1] * xs, "k--", label="linear springs")
+        ax.legend(fontsize=8)
+    ax.set_title("rotation across the side-of-body joint over the load path", fontsize=9)
+    ax.set_xlabel("load factor (g)")
+    ax.set_ylabel("rotation (mrad)")
+    ax.grid(alpha=0.3)
+    fig.suptitle(f"{summary['scene']}: {model['junction_fasteners']} side-of-body fasteners, {model['dof']:,} dof", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(a.out, "junction.png"), dpi=100)
+    plt.close(fig)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("results")
@@ -119,7 +185,7 @@ def main():
         ls, _ = read_run(a.compare)
         last = max(ls)
         lam = float(next(iter(ls[last].values()))["load"])
-        lin = {j: (force(r) / lam, r) for j, r in ls[last].items()}
+        lin = {j: (main_load(meta[j]["splice"], r) / lam, r) for j, r in ls[last].items() if j in meta}
     os.makedirs(a.out, exist_ok=True)
     right = {j: m for j, m in meta.items() if m["side"] == "right" and m["splice"] in SPLICES}
     splices = [s for s in SPLICES if any(m["splice"] == s for m in right.values())]
@@ -136,13 +202,13 @@ def main():
             for k, row in enumerate(rows):
                 jr = sorted((j for j in js if int(right[j]["row"]) == row), key=lambda j: float(right[j]["position"]))
                 pos = [float(right[j]["position"]) for j in jr]
-                ax.plot(pos, [force(steps[s][j]) / 1000 for j in jr], color=lcol[lv], marker="os^vD<>"[k % 7], ms=3, lw=1,
+                ax.plot(pos, [main_load(sp, steps[s][j]) / 1000 for j in jr], color=lcol[lv], marker="os^vD<>"[k % 7], ms=3, lw=1,
                         label=f"{lv:g} g, row {row}" if sp == splices[0] else None)
                 if lin:
-                    ax.plot(pos, [abs(lv) * lin[j][0] / 1000 for j in jr], color=lcol[lv], ls="--", lw=0.8)
+                    ax.plot(pos, [lv * lin[j][0] / 1000 for j in jr], color=lcol[lv], ls="--", lw=0.8)
         ax.set_title(sp.replace("_", " "), fontsize=9)
         ax.set_xlabel("z (mm)" if "spar" in sp else "x along the chord (mm)", fontsize=8)
-        ax.set_ylabel("fastener load (kN)", fontsize=8)
+        ax.set_ylabel(label(sp), fontsize=8)
         ax.tick_params(labelsize=7)
     for ax in list(axes.flat)[len(splices):]:
         ax.axis("off")
@@ -252,6 +318,7 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "hysteresis.png"), dpi=110)
     plt.close(fig)
+    summary_figure(a, base, model, steps, summary, right, at, lin, lcol, table)
     print(f"plot-junction.py: charts of {summary['scene']} at {', '.join(f'{lv:g} g' for lv in at)} in {a.out}/")
     return 0
 
