@@ -9,12 +9,15 @@ the box chord (h the distance between the skins' mid-surfaces).
 
 1. Each box's bending stiffness EI = M / (d theta / dy), fitted over the stations away from the splice
    and the tip, must lie between the beam-theory values of its section (skins, spar webs, caps) with
-   the skins free to contract across the span (modulus E: the lower bound) and held across (E/(1-nu^2)
-   or a laminate's A22/t: the upper bound): where between depends on how much the ribs and spars hold
-   the skins' Poisson contraction, which beam theory does not say. Tolerance: 5 % below the lower
-   bound, for shear lag: the centre box takes its load through the splice plates (nine tenths of
-   the chord), and the spanwise displacement varies by 15 to 20 % (standard deviation over mean)
-   across the chord near it, which lowers the effective section by a few per cent.
+   the plates free to contract across the span (modulus E, a laminate's 1/(t a_11): the lower bound)
+   and held across (E/(1-nu^2), a laminate's A_11/t: the upper bound): where between depends on how
+   much the ribs and spars hold the skins' Poisson contraction, which beam theory does not say.
+   Tolerance: 5 % below the lower bound, for shear lag (the centre box takes its load through the
+   splice plates, nine tenths of the chord, and the spanwise displacement varies by 15 to 20 %,
+   standard deviation over mean, across the chord near them, which lowers the effective section by
+   a few per cent); 3 % above the upper bound, for the stiffness a coarse mesh adds: on the small
+   size (89 x 160 mm elements in the outer box's bays) refining to 44 x 80 mm lowers the outer box's
+   EI by 4 % (carbon-epoxy skins: from 1.011 to 0.969 of the upper bound).
 2. The joint's rotation dtheta_j = theta(y_o) - theta(y_c) - M (bending of the boxes between the two
    stations, with the fitted EI), y_c and y_o the inner edges of the two splice zones, against the
    estimate from the fastener springs: each skin splice carries F = M / h, through N fasteners in
@@ -42,6 +45,7 @@ def section_EI(m, box, restrained):
     """Bending stiffness of a box section about its E-weighted neutral axis."""
     g, th, E = m["geometry"], m["thickness"], m["moduli"]
     k = 1 if restrained else 0
+    Esub = E["sub"] / (1 - 0.33 ** 2) if restrained else E["sub"]
     chord = g["b"] + 2 * g["cap_width"]
     pieces = []   # (E, area, z, own inertia)
     for which, z in (("upper", g["z_up"]), ("lower", g["z_lo"])):
@@ -50,9 +54,9 @@ def section_EI(m, box, restrained):
         pieces.append((Es, t * chord, z, chord * t ** 3 / 12))
     ts, Hw = th["substructure"], g["z_upcap"] - g["z_locap"]
     for _ in range(2):
-        pieces.append((E["sub"], ts * Hw, (g["z_upcap"] + g["z_locap"]) / 2, ts * Hw ** 3 / 12))
+        pieces.append((Esub, ts * Hw, (g["z_upcap"] + g["z_locap"]) / 2, ts * Hw ** 3 / 12))
         for z in (g["z_upcap"], g["z_locap"]):
-            pieces.append((E["sub"], ts * g["cap_width"], z, 0.0))
+            pieces.append((Esub, ts * g["cap_width"], z, 0.0))
     EA = sum(e * a for e, a, _, _ in pieces)
     zna = sum(e * a * z for e, a, z, _ in pieces) / EA
     return sum(e * (a * (z - zna) ** 2 + i) for e, a, z, i in pieces)
@@ -101,11 +105,11 @@ def main():
         slope = np.polyfit(sel[:, 0], sel[:, 1], 1)[0]
         EI[box] = Mlam / slope
         lo, hi = section_EI(m, box, False), section_EI(m, box, True)
-        good = 0.95 * lo <= EI[box] <= hi
+        good = 0.95 * lo <= EI[box] <= 1.03 * hi
         ok &= good
         print(f"{box} box: EI from the model {EI[box]:.4e} N mm2 over {len(sel)} stations (y {sel[0, 0]:.0f} to {sel[-1, 0]:.0f}); "
               f"beam theory {lo:.4e} (skins free across) to {hi:.4e} (held across): ratio {EI[box] / lo:.3f} to the lower bound "
-              f"[{'ok' if good else 'FAIL: outside [0.95 lower, upper]'}]")
+              f"and {EI[box] / hi:.3f} to the upper [{'ok' if good else 'FAIL: outside [0.95 lower, 1.03 upper]'}]")
     yc, yo = g["y_centre_edge"] - g["splice_width"], g["y_outer_edge"] + g["splice_width"]
     tc = np.interp(yc, prof["centre"][:, 0], prof["centre"][:, 1])
     to = np.interp(yo, prof["outer"][:, 0], prof["outer"][:, 1])

@@ -45,15 +45,19 @@ add_test(NAME wing_tiny_both_equilibrium
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_both_linear_np2 ${_wf}/tiny-both.yaml 1e-6)
 set_tests_properties(wing_tiny_both_equilibrium PROPERTIES FIXTURES_REQUIRED "wing_tiny_both_scene;wing_tiny_both_linear_np2")
 
-# Beam theory (check_junction_beam.py): the small size under a pure bending moment, linear springs.
-add_test(NAME wing_make_small_moment COMMAND ${_wfgen} ${_wf} small-moment --size small --shear 0 --torque 0 --load-scale 1
-                                             --load-table 1 --load-steps 1)
-set_tests_properties(wing_make_small_moment PROPERTIES FIXTURES_SETUP wing_small_moment_scene)
-boltnet_run(wing_small_moment 1 ${_wf}/small-moment.yaml -options_file ${_wf}/small-moment.linear.opts)
-set_tests_properties(run_wing_small_moment_np1 PROPERTIES FIXTURES_REQUIRED wing_small_moment_scene)
-add_test(NAME wing_small_beam
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_beam.py ${BOLTNET_OUT}/wing_small_moment_np1 ${_wf}/small-moment.yaml)
-set_tests_properties(wing_small_beam PROPERTIES FIXTURES_REQUIRED "wing_small_moment_scene;wing_small_moment_np1")
+# Beam theory (check_junction_beam.py): the small size under a pure bending moment, linear springs,
+# with aluminium outer skins and with carbon-epoxy ones (laminate sections, fasteners identified
+# with Huth's graphite-epoxy constant).
+foreach(skin aluminium cfrp)
+  add_test(NAME wing_make_small_moment_${skin} COMMAND ${_wfgen} ${_wf} small-moment-${skin} --size small --outer-skin ${skin}
+                                                       --shear 0 --torque 0 --load-scale 1 --load-table 1 --load-steps 1)
+  set_tests_properties(wing_make_small_moment_${skin} PROPERTIES FIXTURES_SETUP wing_small_moment_${skin}_scene)
+  boltnet_run(wing_small_moment_${skin} 1 ${_wf}/small-moment-${skin}.yaml -options_file ${_wf}/small-moment-${skin}.linear.opts)
+  set_tests_properties(run_wing_small_moment_${skin}_np1 PROPERTIES FIXTURES_REQUIRED wing_small_moment_${skin}_scene)
+  add_test(NAME wing_small_beam_${skin}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_beam.py ${BOLTNET_OUT}/wing_small_moment_${skin}_np1 ${_wf}/small-moment-${skin}.yaml)
+  set_tests_properties(wing_small_beam_${skin} PROPERTIES FIXTURES_REQUIRED "wing_small_moment_${skin}_scene;wing_small_moment_${skin}_np1")
+endforeach()
 
 # Bad parameters stop the generator with a message naming them, and nothing is run.
 boltnet_expect(wing_make_bad_gap 1 --fail --match "--butt-gap 5.* is too small for the tee's stem"
