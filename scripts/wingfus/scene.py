@@ -45,7 +45,7 @@ def laminate_layup(a, t):
 def joint_types(a, fasteners, bin_centres, part_material, mats):
     """YAML of every joint type used, and the parameters of each (for the metadata)."""
     th = a.thickness
-    part_t = lambda p: th[_thickness_key(part_material[p])]
+    part_t = lambda p: th[thickness_key(part_material[p])]
     types = {}
     for f in fasteners:
         if f.type in types:
@@ -74,7 +74,7 @@ def joint_types(a, fasteners, bin_centres, part_material, mats):
     return types, "\n".join(lines)
 
 
-def _thickness_key(material):
+def thickness_key(material):
     for k in ("upper_skin", "lower_skin"):
         if material.startswith(k):
             return k
