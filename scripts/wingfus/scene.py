@@ -114,7 +114,8 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
         f.write(model["yaml_header"])
         f.write(f"scene:\n  name: {name}\n  patches: {name}.patches.csv\n  joints: {name}.joints.csv\n  bcs: {name}.bcs.csv\n")
         f.write(f"material:\n{mat_yaml}\njoint:\n{types_yaml}\n")
-        f.write(f"coupling:\n  type: exact\n  radius: {_num(a.coupling_radius)}   # below half of every element: each footprint is the element holding the fastener\n")
+        f.write(f"coupling:\n  type: exact\n  radius: {_num(a.coupling_radius)}   # below half of every element: each footprint is the element holding the fastener\n"
+                f"  reach: {_num(a.coupling_reach)}    # along the bolt: beyond the distance from a fastener to its sheets' mid-surfaces\n")
         f.write(f"load:\n  path: table\n  table: {','.join(_num(v) for v in a.load_table)}   # load factors (g); forces in the bcs table are the 1 g loads\n"
                 f"  steps: {a.load_steps}\n")
     with open(base + ".model.json", "w") as f:

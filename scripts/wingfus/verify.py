@@ -1,15 +1,16 @@
 """Checks every fastener against the meshes the way boltnet attaches it, before anything is written.
 
-boltnet's footprint of a fastener on a shell part (lib/mesh/mesh.cpp, CouplingFootprint) is the part's
-nodes within -coupling_radius of the fastener in the plane normal to the bolt axis, plus, when they are
-fewer than three, the element that contains the fastener in that plane (the nearest along the axis).
-The distance along the axis is not bounded: a node on the far side of a folded part (a box's other
-skin, a frame one bay away) counts if it projects inside the radius. The driver only stops when a
-footprint is empty. This check replays the rule and requires, for each fastener and each part:
+boltnet's footprint of a fastener on a shell part (lib/mesh/search.cpp, FootprintFinder) is the
+part's nodes within -coupling_radius of the fastener in the plane normal to the bolt axis, on the
+sheet nearest the fastener along the axis within -coupling_reach, plus, when they are fewer than
+three, the element that contains the fastener in that plane (the nearest along the axis). The driver
+only stops when a footprint is empty. This check replays the rule and requires, for each fastener and
+each part:
 
-- no node within the radius (so the footprint is exactly one element: fasteners at element centres);
+- no node within the radius, at any distance along the axis (so the footprint is exactly one
+  element: fasteners at element centres; and no other sheet of the part comes near the bolt);
 - the containing element found by the rule is a sheet of this part at the fastener: its corners lie
-  within the part's offset (half the two thicknesses, plus a margin) along the axis;
+  within the reach along the axis;
 - the footprints of two fasteners on one part share no node (boltnet would give the node to the
   nearer one, silently changing both);
 - no footprint node carries a boundary condition (boltnet stops on it with exact coupling).
@@ -26,7 +27,7 @@ def _frame(n):
     return n, e1, np.cross(n, e1)
 
 
-def footprints(mesh, fasteners, side, radius, offset):
+def footprints(mesh, fasteners, side, radius, reach):
     """Element of `mesh` (xyz, quads) holding each fastener (side 'a' or 'b'); raises ValueError
     naming the first fastener that breaks a rule."""
     xyz, quads = mesh
@@ -63,15 +64,17 @@ def footprints(mesh, fasteners, side, radius, offset):
             if best < 0:
                 raise ValueError(f"fastener {f.id} ({f.splice}) at {np.round(p, 3)} is outside part '{getattr(f, side)}'")
             dn = np.abs((xyz[quads[best]] - p) @ n)
-            if dn.max() > offset(f) + 1.0:
+            if dn.max() > reach:
                 raise ValueError(f"fastener {f.id} ({f.splice}) at {np.round(p, 3)}: the element of part '{getattr(f, side)}' "
-                                 f"boltnet would attach it to lies {dn.max():.1f} mm away along the bolt axis")
+                                 f"that holds it lies {dn.max():.1f} mm away along the bolt axis, beyond the reach {reach} mm "
+                                 f"(--coupling-reach)")
             out[f.id] = best
     return out
 
 
-def check(part_meshes, part_sets, fasteners, radius, thickness_of):
-    """part_meshes: name -> (xyz, quads); part_sets: name -> {set: node indices}; thickness_of(part)."""
+def check(part_meshes, part_sets, fasteners, radius, reach):
+    """part_meshes: name -> (xyz, quads); part_sets: name -> {set: node indices}; radius and reach:
+    -coupling_radius and -coupling_reach."""
     by = {}
     for f in fasteners:
         by.setdefault(f.a, []).append((f, "a"))
@@ -83,8 +86,7 @@ def check(part_meshes, part_sets, fasteners, radius, thickness_of):
             fs = [f for f, s in lst if s == side]
             if not fs:
                 continue
-            off = lambda f: (thickness_of(f.a) + thickness_of(f.b)) / 2
-            el = footprints(part_meshes[part], fs, side, radius, off)
+            el = footprints(part_meshes[part], fs, side, radius, reach)
             for f in fs:
                 setattr(f, "elem_" + side, el[f.id])
         quads = part_meshes[part][1]
