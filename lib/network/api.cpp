@@ -28,6 +28,8 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   PetscCall(SNESDestroy(&(*a)->snes));
   PetscCall(MatDestroy(&(*a)->J));
   PetscCall(MatDestroy(&(*a)->Jabs));
+  PetscCall(MatDestroy(&(*a)->Jbase));
+  PetscCall(MatDestroy(&(*a)->Pfac));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(DMDestroy(&(*a)->net.dm));
   PetscCallMPI(MPI_Comm_free(&(*a)->comm));

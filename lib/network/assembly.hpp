@@ -140,6 +140,15 @@ struct _p_BoltnetAssembly {
   Mat       J         = nullptr;
   Vec       X         = nullptr; // converged solution
   PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
+  Mat       Jbase     = nullptr;     // the linear part of J (patches, seams), copied in before the joints
+  // The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
+  // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian,
+  // Pfac, refactored when the Krylov solve takes more than refactor_its iterations or fails).
+  PetscBool lagged       = PETSC_FALSE;
+  PetscInt  refactor_its = 25;
+  Mat       Pfac         = nullptr;
+  PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
+  PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
   Mat       Jabs      = nullptr;     // |J_ij| of the last Jacobian: the round-off of each row of K u
   // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md): a converged step must balance

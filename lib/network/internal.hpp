@@ -15,6 +15,8 @@ PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, siz
 
 // The Jacobian, preallocated exactly (network/jacobian.cpp).
 PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a);
+// The lagged interface solve's choice: refactor P from J now, or keep its factorisation.
+PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P);
 // The boundary rows of the owned patches (network/boundary.cpp).
 PetscErrorCode AssemblySetUpBoundary(BoltnetAssembly a);
 // The ghosted local copy of X (collective: every rank must call it, whatever it owns).

@@ -17,11 +17,19 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   KSP            ksp;
   PC             pc;
   PetscFunctionBeginUser;
+  const char *isolves[] = {"direct", "lagged"};
+  PetscInt    isolve    = a->lagged ? 1 : 0;
+  PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
+  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes) or lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations): docs/solver.md", "AssemblySetUpSolver", isolves, 2, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->refactor_its, &a->refactor_its, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
+  a->lagged = isolve == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
   PetscCall(SNESSetDM(a->snes, a->net.dm));
   PetscCall(SNESSetFunction(a->snes, nullptr, AssemblyFormFunction, a));
-  PetscCall(SNESSetJacobian(a->snes, a->J, a->J, AssemblyFormJacobian, a));
+  PetscCall(SNESSetJacobian(a->snes, a->J, a->lagged ? a->Pfac : a->J, AssemblyFormJacobian, a));
   PetscCall(SNESMonitorSet(a->snes, MonitorJointStates, a, nullptr));
   // Defaults that the command line overrides: Newton with boltnet's line search, direct solve.
   PetscCall(SNESSetType(a->snes, SNESNEWTONLS));
@@ -29,7 +37,12 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBOLTNET));
   PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, 1e-10, 0.0, 50, PETSC_DEFAULT));
   PetscCall(SNESGetKSP(a->snes, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  if (a->lagged) { // right preconditioning: GMRES then watches the true residual of J
+    PetscCall(KSPSetType(ksp, KSPGMRES));
+    PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
+    PetscCall(KSPGMRESSetRestart(ksp, 100));
+    PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
+  } else PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
@@ -102,6 +115,18 @@ PetscErrorCode ConvergedInBalance(SNES snes, PetscInt it, PetscReal xnorm, Petsc
       *reason = SNES_CONVERGED_FNORM_ABS;
     } else PetscCall(PetscInfo(snes, "At the round-off floor of every row but not in balance: %s\n", DescribeEquilibrium(eq).c_str()));
   }
+  PetscFunctionReturn(0);
+}
+
+// The Newton iterations' linear solves and their Krylov iterations, for summary.json.
+PetscErrorCode RecordLinearSolves(BoltnetAssembly a)
+{
+  PetscInt its, lits;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetIterationNumber(a->snes, &its));
+  PetscCall(SNESGetLinearSolveIterations(a->snes, &lits));
+  a->linear_solves += its;
+  a->krylov_its += lits;
   PetscFunctionReturn(0);
 }
 
@@ -186,6 +211,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
       PetscInt            its;
       PetscCall(SNESGetConvergedReason(a->snes, &reason));
       PetscCall(SNESGetIterationNumber(a->snes, &its));
+      PetscCall(RecordLinearSolves(a));
       // Joints solved as linear springs must still be stuck under the full law at the solution;
       // those that are not are released and the solve goes on from there. What is accepted is
       // then a solution of the full model.
@@ -202,6 +228,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         PetscCall(SNESSolve(a->snes, nullptr, Xtry));
         PetscCall(SNESGetConvergedReason(a->snes, &reason));
         PetscCall(SNESGetIterationNumber(a->snes, &more));
+        PetscCall(RecordLinearSolves(a));
         its += more;
       }
       PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
@@ -245,7 +272,14 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         std::string singular;
         PetscCall(SNESGetKSP(a->snes, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
+        // A Krylov solve preconditioned by a singular factorisation breaks down before the
+        // convergence test sees the null pivots: look at them here, before the reset.
+        if (a->singular.empty()) {
+          PetscInt nnull;
+          PetscCall(AssemblyCheckNullPivots(a, &nnull));
+        }
         PetscCall(PCReset(pc));
+        a->pfac_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
         PetscCall(AssemblySetUpNullPivots(a));
         if (!a->singular.empty()) singular = a->singular;
         else PetscCall(AssemblyDescribeSingular(a, Xtry, singular));
