@@ -51,6 +51,12 @@ TEST(Progress, Line)
   EXPECT_EQ(FormatProgress(p), "step 3/10  load 0.3  newton 4  stick 1180 slide 20 bear 5  elapsed 12.3 s  left ~28.7 s");
   p.part = 0.5, p.cuts = 1, p.load = 0.25;
   EXPECT_EQ(FormatProgress(p), "step 3/10 at 0.50 (1 cut-back)  load 0.25  newton 4  stick 1180 slide 20 bear 5  elapsed 12.3 s  left ~28.7 s");
+  p.part = 0.875, p.cuts = 2; // rounded down: 1.00 only where the nominal step is reached
+  EXPECT_EQ(FormatProgress(p).substr(0, 31), "step 3/10 at 0.87 (2 cut-backs)");
+  p.part = 1 - 1.0 / 256, p.cuts = 8;
+  EXPECT_EQ(FormatProgress(p).substr(0, 31), "step 3/10 at 0.99 (8 cut-backs)");
+  p.part = 0.5 - 1e-15, p.cuts = 1;
+  EXPECT_EQ(FormatProgress(p).substr(0, 30), "step 3/10 at 0.50 (1 cut-back)");
   p.part = 1, p.cuts = 2, p.load = 0.3;
   EXPECT_EQ(FormatProgress(p), "step 3/10 at 1.00 (2 cut-backs)  load 0.3  newton 4  stick 1180 slide 20 bear 5  elapsed 12.3 s  left ~28.7 s");
 }
