@@ -12,6 +12,10 @@ step; open fields.xdmf in ParaView: docs/output.md).\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -joint_bolt_mu 0.3 -output_dir /tmp/mu03\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -help      (every option, with defaults and units)\n\
 \n\
+Each converged load step prints one line: the nominal step of the path, load factor, Newton\n\
+iterations, joints sticking, sliding and bearing, elapsed time and an estimate of the time left\n\
+(-load_progress false: none; docs/scenes.md, \"Progress\").\n\
+\n\
 A long run can keep a checkpoint every N converged steps (-checkpoint_every N) and, killed, go on\n\
 from it with the same command and -restart <output_dir>/checkpoint.h5 (docs/scenes.md).\n\
 \n\
@@ -76,6 +80,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   if (!hasScene && helpOnly) { // list the options that do not depend on a scene
     PetscCall(LoadPathFromOptions(comm, nullptr, &path));
     PetscCall(BoltnetAssemblyCreate(comm, &a));
+    a->opt.progress = PETSC_TRUE; // as below
     PetscCall(BoltnetAssemblySetFromOptions(a));
     PetscCall(BoltnetAssemblyDestroy(&a));
     PetscFunctionReturn(0);
@@ -88,6 +93,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
 
   // Everything is read and checked before anything is written.
   PetscCall(BoltnetAssemblyCreate(comm, &a));
+  a->opt.progress = PETSC_TRUE; // a run of the driver reports each converged step unless -load_progress false
   PetscCall(SceneDescribeAssembly(comm, &scene, a));
   PetscCall(LoadPathFromOptions(comm, nullptr, &path));
   {

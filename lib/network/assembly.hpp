@@ -31,6 +31,7 @@ struct AssemblyOptions {
   Tangent      tangent        = Tangent::Consistent; // docs/solver.md: why
   PetscInt     max_cuts       = 8;
   PetscBool    monitor_states = PETSC_FALSE;
+  PetscBool    progress       = PETSC_FALSE; // one line per converged step (the driver turns it on)
   // Linear where it can be (docs/solver.md): joints that stay stuck are solved as linear springs,
   // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
   PetscBool    stuck_linear = PETSC_TRUE;

@@ -2,6 +2,9 @@
 // automatic cut-back with a bounded number of halvings.
 #include "network/assembly.hpp"
 #include "solver/loadpath.hpp"
+#include "solver/progress.hpp"
+
+#include <petsctime.h>
 
 #include <cmath>
 #include <sstream>
@@ -171,6 +174,47 @@ PetscErrorCode CheckResumedPath(BoltnetAssembly a, const std::vector<PetscReal> 
   PetscFunctionReturn(0);
 }
 
+// The joints at the last converged step as joints.csv records them (the accepted responses), summed
+// over the ranks' own joints: in state stick, in state slide, and bearing (the bolt on its hole,
+// whatever the state: a frictional joint stuck or sliding in bearing, a contact joint closed).
+PetscErrorCode CountProgressStates(BoltnetAssembly a, Progress *p)
+{
+  PetscInt loc[3] = {0, 0, 0}, glob[3];
+  PetscFunctionBeginUser;
+  for (const Response &r : a->joints.accepted) {
+    loc[0] += r.state == State::Stick;
+    loc[1] += r.state == State::Slide;
+    loc[2] += r.bearing;
+  }
+  PetscCall(MPIU_Allreduce(loc, glob, 3, MPIU_INT, MPI_SUM, a->comm));
+  p->stick = glob[0];
+  p->slide = glob[1];
+  p->bear  = glob[2];
+  PetscFunctionReturn(0);
+}
+
+// The progress line of the converged step `info` (docs/scenes.md, "Progress"): the nominal step i + 1
+// of the path, reached or (after cut-backs) part of the way to it.
+PetscErrorCode PrintProgress(BoltnetAssembly a, const StepInfo &info, const std::vector<PetscReal> &targets, size_t i, PetscInt halved, PetscReal done0, PetscLogDouble t0)
+{
+  Progress       p;
+  PetscLogDouble now;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&now));
+  const PetscReal done = PathFraction(a->path.start, targets, (size_t)a->path.target, a->lambda);
+  p.step    = (PetscInt)i + 1;
+  p.nsteps  = (PetscInt)targets.size();
+  p.part    = a->lambda == targets[i] ? 1.0 : done - (PetscReal)i;
+  p.cuts    = halved;
+  p.load    = info.load;
+  p.newton  = info.newton_its;
+  p.elapsed = (PetscReal)(now - t0);
+  p.left    = EstimateTimeLeft(p.elapsed, done0, done, (PetscReal)targets.size());
+  PetscCall(CountProgressStates(a, &p));
+  PetscCall(PetscPrintf(a->comm, "%s\n", FormatProgress(p).c_str()));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 } // namespace boltnet
 
@@ -189,6 +233,10 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
   if (a->resume) PetscCall(CheckResumedPath(a, targets));
   a->resume        = PETSC_FALSE;
   a->path.ntargets = (PetscInt)targets.size();
+  // For -load_progress: the clock and the nominal steps done when this run took the path up.
+  PetscLogDouble t0;
+  PetscCall(PetscTime(&t0));
+  const PetscReal done0 = PathFraction(a->path.start, targets, (size_t)a->path.target, a->lambda);
   PetscCall(VecDuplicate(a->X, &Xtry));
   for (size_t i = (size_t)a->path.target; i < targets.size(); ++i) {
     const PetscReal target = targets[i];
@@ -259,6 +307,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         if (a->lambda == target) a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i + 1, 0, 0};
         else a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i, sub, halved};
         if (a->on_step) PetscCall(a->on_step(a, info));
+        if (a->opt.progress) PetscCall(PrintProgress(a, info, targets, (size_t)i, halved, done0, t0)); // once the step's results are out
         continue;
       }
       std::string chatter;
