@@ -12,19 +12,19 @@
 namespace boltnet {
 namespace {
 
-// The automatic patch size (-patch_max_nodes -1). Kept whole, a patch is cut only to share a part
-// between ranks: about eight patches per rank, none under 32 nodes, no cut on one rank. Condensed,
-// a patch is also cut for its own sake: the factorisation of one large patch costs more than
-// those of several smaller ones plus the larger interface (docs/solver.md measures the trade-off).
+// The automatic patch size (-patch_max_nodes -1). A part is cut only to share it between ranks:
+// kept whole, about eight patches per rank, none under 32 nodes; condensed, about four per rank,
+// none under 64 nodes; no cut on one rank. Cutting a condensed part for its own sake does not pay:
+// the sparse factorisation of a whole plate costs about what its pieces cost, while every cut puts
+// a band of seam nodes on the interface, where each patch's S is dense over all its ports
+// (docs/solver.md, "Patch size": whole plates 11 times faster than 3,000-node pieces).
 long AutomaticPatchSize(BoltnetAssembly a)
 {
   PetscInt total = 0;
   for (const auto &kv : a->model.shells) total += (PetscInt)kv.second.mesh.x.size();
-  if (!a->opt.condense) return a->size == 1 ? 0 : std::max<long>(32, (total + 8 * a->size - 1) / (8 * a->size));
-  // Condensed: no patch over kCondensedPatchNodes, and on several ranks about four patches per
-  // rank so that METIS can balance them, none cut below 64 nodes.
-  if (a->size == 1) return kCondensedPatchNodes;
-  return std::min<long>(kCondensedPatchNodes, std::max<long>(64, (total + 4 * a->size - 1) / (4 * a->size)));
+  if (a->size == 1) return 0;
+  const long per_rank = a->opt.condense ? 4 : 8, smallest = a->opt.condense ? 64 : 32;
+  return std::max<long>(smallest, (total + per_rank * a->size - 1) / (per_rank * a->size));
 }
 
 // Rank 0 lays the whole network out (the graph and its plain components only: no mesh), then

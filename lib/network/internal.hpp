@@ -5,9 +5,6 @@
 
 namespace boltnet {
 
-// The automatic largest size of a condensed patch, in nodes (docs/solver.md, "Patch size").
-constexpr long kCondensedPatchNodes = 3000;
-
 // Copy component 0 of network point p (a vertex or an edge) into out (bytes of it; out may be
 // null to read the key only). DMNetwork stores components 4-byte aligned: reading a struct of
 // doubles in place is undefined behaviour, a copy is not.
