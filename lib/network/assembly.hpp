@@ -38,6 +38,9 @@ struct AssemblyOptions {
   PetscReal    stuck_margin = 0.3; // freeze a joint whose predicted utilization stays below this
   // Patches: condensed onto their ports, or kept whole (docs/solver.md, "Condensed patches").
   PetscBool    condense = PETSC_TRUE;
+  // The six rigid-body modes of the nodes as the Jacobian's near-null space (MatSetNearNullSpace),
+  // for algebraic multigrid (docs/solver.md, "Iterative solvers"); LU ignores it.
+  PetscBool    near_null_space = PETSC_TRUE;
   // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,
   // -1: automatic), and whether boltnet partitions the network by dof (METIS) or PETSc does.
   PetscInt     patch_max_nodes = -1;

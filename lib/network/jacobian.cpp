@@ -222,7 +222,7 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscCall(MatDuplicate(a->J, MAT_COPY_VALUES, &a->Jbase));
   PetscCall(MatDuplicate(a->J, MAT_DO_NOT_COPY_VALUES, &a->Pfac));
   PetscCall(MatSetOption(a->Pfac, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
-  PetscCall(SetRigidBodyModes(a));
+  if (a->opt.near_null_space) PetscCall(SetRigidBodyModes(a));
   PetscFunctionReturn(0);
 }
 
