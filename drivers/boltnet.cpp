@@ -45,7 +45,8 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
 {
   MPI_Comm        comm = PETSC_COMM_WORLD;
   char            file[PETSC_MAX_PATH_LEN] = "", outdir[PETSC_MAX_PATH_LEN] = "";
-  PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE, fields = PETSC_TRUE;
+  PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE;
+  FieldsOptions   fields;
   Scene           scene;
   LoadPath        path;
   Release         held;
@@ -58,7 +59,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options)", "", file, file, sizeof(file), &hasScene));
   PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>)", "", outdir, outdir, sizeof(outdir), nullptr));
-  PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5 + fields.xdmf per converged step (shell displacement/rotation, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", fields, &fields, nullptr));
+  PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &fields));
   PetscOptionsEnd();
   if (!hasScene && helpOnly) { // list the options that do not depend on a scene
     PetscCall(LoadPathFromOptions(comm, nullptr, &path));

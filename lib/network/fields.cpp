@@ -1,117 +1,262 @@
-// The displacement field gathered to rank 0 (network/fields.hpp). Each rank recovers the whole
-// displacement of the shell patches it owns (the interior of a condensed patch included) and the
-// dof of the joints it holds; rank 0 puts them back into the user's parts.
+// The assembly's results where they live (network/fields.hpp): the natural numbering of nodes,
+// elements and joints, the owned-to-natural scatters, and each converged step's displacements,
+// element results and joint lines on the rank that owns them.
 #include "network/fields.hpp"
-#include "core/log.hpp"
-#include "network/gather.hpp"
+#include "core/guard.hpp"
 #include "network/internal.hpp"
 
 #include <algorithm>
-#include <map>
+#include <set>
 
 namespace boltnet {
 namespace {
 
-// The dof of a joint's two attachment nodes.
-struct JointDof {
-  PetscInt  index; // position in the layout's joints
-  PetscReal ua[6], ub[6];
-};
+constexpr int kXdmfQuadrilateral = 5; // XDMF cell type codes (a triangle is 4)
 
-// The reference point of a joint's attachment to one side: a rigid patch's node; on a shell patch,
-// the point of the bolt axis at the mean axial position of the footprint nodes (the mid-surface).
-std::array<double, 3> AttachmentPoint(BoltnetAssembly a, const JointComp &j, PetscInt pos, PetscInt node)
+// The elements a patch writes, each element of a part exactly once over its patches: the patch's
+// whole elements, and of the elements it shares with other patches (ShellPatch::SharedElement, one
+// copy in every patch holding one of its nodes) those whose node 0 it holds: exactly one patch holds
+// any node. f(element number in the part, the patch's node numbers (-1: another patch's), the part's
+// node numbers, X). This is the only code that enumerates output elements: a mesh with triangles
+// adds its triangles here (XDMF type 4, three nodes) and nothing else changes but the XDMF topology
+// (io/fields.cpp).
+template <class F>
+void ElementsOf(const ShellPatch &sp, F &&f)
 {
-  auto sh = a->layout.shells.find(pos);
-  if (sh == a->layout.shells.end()) { // a rigid patch: its node, or where the joint acts on it
-    const PetscReal *d = pos == j.va ? j.da : j.db;
-    return {a->layout.patches[pos].x[0] + d[0], a->layout.patches[pos].x[1] + d[1], a->layout.patches[pos].x[2] + d[2]};
+  const auto partNode = [&](int l) { return sp.part_node.empty() ? l : sp.part_node[l]; };
+  for (size_t e = 0; e < sp.mesh.quads.size(); ++e) {
+    const auto        &q = sp.mesh.quads[e];
+    shell::Nodes       X;
+    std::array<int, 4> pn;
+    for (int k = 0; k < 4; ++k) {
+      X[k]  = sp.mesh.x[q[k]];
+      pn[k] = partNode(q[k]);
+    }
+    f(sp.part_elem.empty() ? (int)e : sp.part_elem[e], q, pn, X);
   }
-  const QuadMesh &m = sh->second.mesh;
-  if (node < (PetscInt)m.x.size()) return m.x[node]; // attached to a mesh node (-coupling_type node)
-  const ShellPatch::JointNode &jn = sh->second.joint_nodes.at(node - (PetscInt)m.x.size());
-  double                       s  = 0;
-  for (int k : jn.footprint)
-    for (int d = 0; d < 3; ++d) s += j.R[d] * (m.x[k][d] - j.x[d]);
-  if (!jn.footprint.empty()) s /= (double)jn.footprint.size();
-  return {j.x[0] + s * j.R[0], j.x[1] + s * j.R[1], j.x[2] + s * j.R[2]};
+  for (const auto &el : sp.shared)
+    if (el.node[0] >= 0) f(el.elem, el.node, el.part_node, el.X);
+}
+
+PetscErrorCode FinishSpace(MPI_Comm comm, FieldSpace &s)
+{
+  PetscFunctionBeginUser;
+  s.nlocal = (PetscInt)s.natural.size();
+  s.start  = 0;
+  PetscCallMPI(MPI_Exscan(&s.nlocal, &s.start, 1, MPIU_INT, MPI_SUM, comm));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  if (rank == 0) s.start = 0; // MPI_Exscan leaves rank 0's result undefined
+  PetscCall(MPIU_Allreduce(&s.nlocal, &s.nglobal, 1, MPIU_INT, MPI_SUM, comm));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CreateVec(MPI_Comm comm, PetscInt n, PetscInt N, PetscInt bs, Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, v));
+  PetscCall(VecSetSizes(*v, bs * n, bs * N));
+  PetscCall(VecSetBlockSize(*v, bs));
+  PetscCall(VecSetType(*v, VECSTANDARD));
+  PetscFunctionReturn(0);
 }
 
 } // namespace
 
-PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &parts, std::vector<JointLine> &lines)
+PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
 {
-  std::vector<double>      mine, all; // per owned shell patch: index, size, its dof
-  std::vector<JointDof>    jmine, jall;
-  std::vector<JointRecord> rec;
-  Vec                      Xl;
-  const PetscScalar       *x;
+  MPI_Comm comm = a->comm;
   PetscFunctionBeginUser;
-  parts.clear();
-  lines.clear();
-  PetscCall(GetLocalX(a, a->X, &Xl, &x));
-  std::vector<double> u;
+  std::set<PetscInt> ids;
+  for (const PatchComp &p : a->layout.patches)
+    if (p.kind == static_cast<PetscInt>(PatchKind::Shell)) ids.insert(p.id);
+  m->part_ids.assign(ids.begin(), ids.end());
+  const size_t np = m->part_ids.size();
+  auto         where = [&](PetscInt id) { return (size_t)(std::lower_bound(m->part_ids.begin(), m->part_ids.end(), id) - m->part_ids.begin()); };
+  // Part-wise counts of what this rank holds, summed over ranks: the offsets of the natural numbering.
+  std::vector<PetscInt> count(2 * np, 0), total(2 * np, 0);
   for (const OwnedPatch &op : a->patches.owned) {
     if (!op.shell) continue;
-    PetscCall(AssemblyPatchDisplacement(a, op, x, a->lambda, u));
-    mine.push_back((double)op.index);
-    mine.push_back((double)u.size());
-    mine.insert(mine.end(), u.begin(), u.end());
+    const ShellPatch &sp = a->layout.shells.at(op.index);
+    count[2 * where(sp.id)] += (PetscInt)sp.mesh.x.size();
+    ElementsOf(sp, [&](int, const std::array<int, 4> &, const std::array<int, 4> &, const shell::Nodes &) { count[2 * where(sp.id) + 1]++; });
   }
-  const JointSet &js = a->joints;
+  PetscCall(MPIU_Allreduce(count.data(), total.data(), (PetscMPIInt)(2 * np), MPIU_INT, MPI_SUM, comm));
+  PetscInt noff = 0, eoff = 0;
+  for (size_t i = 0; i < np; ++i) {
+    m->node_off[m->part_ids[i]] = noff;
+    m->elem_off[m->part_ids[i]] = eoff;
+    noff += total[2 * i];
+    eoff += total[2 * i + 1];
+  }
+  std::set<PetscInt> ghosts;
+  for (size_t i = 0; i < a->patches.owned.size(); ++i) {
+    const OwnedPatch &op = a->patches.owned[i];
+    if (!op.shell) continue;
+    const ShellPatch &sp = a->layout.shells.at(op.index);
+    const PetscInt    n0 = m->node_off.at(sp.id), e0 = m->elem_off.at(sp.id);
+    for (size_t l = 0; l < sp.mesh.x.size(); ++l) {
+      m->nodes.natural.push_back(n0 + (sp.part_node.empty() ? (PetscInt)l : sp.part_node[l]));
+      m->node_src.push_back({(PetscInt)i, (PetscInt)l});
+    }
+    ElementsOf(sp, [&](int elem, const std::array<int, 4> &local, const std::array<int, 4> &pn, const shell::Nodes &X) {
+      FieldElement fe{sp.id, elem, (PetscInt)i, kXdmfQuadrilateral, 4, {}, local, X};
+      for (int k = 0; k < 4; ++k) {
+        fe.node[k] = n0 + pn[k];
+        if (local[k] < 0) ghosts.insert(fe.node[k]);
+      }
+      m->elems.natural.push_back(e0 + elem);
+      m->elements.push_back(fe);
+    });
+  }
+  for (size_t k = 0; k < a->joints.size(); ++k) m->joints.natural.push_back(a->joints.comp[k].index);
+  PetscCall(FinishSpace(comm, m->nodes));
+  PetscCall(FinishSpace(comm, m->elems));
+  PetscCall(FinishSpace(comm, m->joints));
+  PetscCheck(m->nodes.nglobal == noff && m->elems.nglobal == eoff && m->joints.nglobal == (PetscInt)a->layout.joints.size(), comm, PETSC_ERR_PLIB, "The output numbering does not cover the model once");
+  // The other patches' nodes of the shared elements this rank writes, from the natural vectors.
+  m->ghosts.assign(ghosts.begin(), ghosts.end());
+  for (size_t g = 0; g < m->ghosts.size(); ++g) m->ghost_index[m->ghosts[g]] = (PetscInt)g;
+  {
+    const PetscInt ng = (PetscInt)m->ghosts.size();
+    Vec            nat;
+    IS             from, to;
+    PetscCall(CreateVec(comm, m->nodes.nlocal, m->nodes.nglobal, 3, &nat));
+    PetscCall(VecCreateSeq(PETSC_COMM_SELF, 3 * ng, &m->ghost_u));
+    PetscCall(VecDuplicate(m->ghost_u, &m->ghost_r));
+    PetscCall(ISCreateBlock(PETSC_COMM_SELF, 3, ng, m->ghosts.data(), PETSC_COPY_VALUES, &from));
+    PetscCall(ISCreateStride(PETSC_COMM_SELF, 3 * ng, 0, 1, &to));
+    PetscCall(VecScatterCreate(nat, from, m->ghost_u, to, &m->ghost_scatter));
+    PetscCall(ISDestroy(&from));
+    PetscCall(ISDestroy(&to));
+    PetscCall(VecDestroy(&nat));
+  }
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldMapDestroy(FieldMap *m)
+{
+  PetscFunctionBeginUser;
+  for (FieldSpace *s : {&m->nodes, &m->elems, &m->joints})
+    for (auto &kv : s->scatter) PetscCall(VecScatterDestroy(&kv.second));
+  PetscCall(VecScatterDestroy(&m->ghost_scatter));
+  PetscCall(VecDestroy(&m->ghost_u));
+  PetscCall(VecDestroy(&m->ghost_r));
+  *m = FieldMap{};
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode FieldSpaceNatural(MPI_Comm comm, FieldSpace &s, PetscInt bs, const std::vector<double> &owned, Vec *natural)
+{
+  Vec x;
+  PetscFunctionBeginUser;
+  PetscCheck((PetscInt)owned.size() == bs * s.nlocal, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%zu values for %" PetscInt_FMT " items of block size %" PetscInt_FMT, owned.size(), s.nlocal, bs);
+  PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &x));
+  PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, natural));
+  VecScatter &sc = s.scatter[bs];
+  if (!sc) {
+    IS from, to;
+    PetscCall(ISCreateStride(PETSC_COMM_SELF, bs * s.nlocal, bs * s.start, 1, &from));
+    PetscCall(ISCreateBlock(PETSC_COMM_SELF, bs, s.nlocal, s.natural.data(), PETSC_COPY_VALUES, &to));
+    PetscCall(VecScatterCreate(x, from, *natural, to, &sc));
+    PetscCall(ISDestroy(&from));
+    PetscCall(ISDestroy(&to));
+  }
+  PetscScalar *p;
+  PetscCall(VecGetArray(x, &p));
+  std::copy(owned.begin(), owned.end(), p);
+  PetscCall(VecRestoreArray(x, &p));
+  PetscCall(VecScatterBegin(sc, x, *natural, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(sc, x, *natural, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecDestroy(&x));
+  PetscFunctionReturn(0);
+}
+
+const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e)
+{
+  return a->layout.shells.at(a->patches.owned[e.owned].index).material;
+}
+
+PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, StepFields *f)
+{
+  Vec                Xl;
+  const PetscScalar *x;
+  PetscFunctionBeginUser;
+  f->u.clear();
+  f->r.clear();
+  f->results.clear();
+  f->lines.clear();
+  // Before the first step the joints have no accepted response yet (as AssemblyGatherRecords).
+  JointSet &js      = a->joints;
+  PetscInt  missing = js.accepted.size() != js.size(), any;
+  PetscCall(MPIU_Allreduce(&missing, &any, 1, MPIU_INT, MPI_MAX, a->comm));
+  if (any) PetscCall(AssemblyEvaluateJoints(a, a->X, js.accepted, &js.accepted_jump, true));
+  PetscCall(GetLocalX(a, a->X, &Xl, &x));
+  std::map<PetscInt, std::vector<double>> disp; // by position in the owned patches
+  for (size_t i = 0; i < a->patches.owned.size(); ++i)
+    if (a->patches.owned[i].shell) PetscCall(AssemblyPatchDisplacement(a, a->patches.owned[i], x, a->lambda, disp[(PetscInt)i]));
+  f->u.reserve(3 * m.node_src.size());
+  f->r.reserve(3 * m.node_src.size());
+  for (const auto &[i, l] : m.node_src) {
+    const double *d = disp[i].data() + 6 * l;
+    f->u.insert(f->u.end(), d, d + 3);
+    f->r.insert(f->r.end(), d + 3, d + 6);
+  }
   for (size_t k = 0; k < js.size(); ++k) {
-    JointDof d;
-    d.index = js.comp[k].index;
-    std::copy(x + js.oa[k], x + js.oa[k] + 6, d.ua);
-    std::copy(x + js.ob[k], x + js.ob[k] + 6, d.ub);
-    jmine.push_back(d);
+    const JointComp &j  = js.comp[k];
+    const Response  &re = js.accepted[k];
+    JointLine        l{};
+    l.id      = j.id;
+    l.state   = static_cast<PetscInt>(re.state);
+    l.bearing = re.bearing ? 1 : 0;
+    l.xa      = JointAttachmentPoint(a, j, j.va, j.pnode_a);
+    l.xb      = JointAttachmentPoint(a, j, j.vb, j.pnode_b);
+    std::copy(x + js.oa[k], x + js.oa[k] + 6, l.ua.begin());
+    std::copy(x + js.ob[k], x + js.ob[k] + 6, l.ub.begin());
+    std::copy(j.R, j.R + 9, l.R.begin());
+    for (int i = 0; i < 6; ++i) {
+      l.jump[i]  = js.accepted_jump[k][i];
+      l.force[i] = re.force[i];
+    }
+    l.slip = {re.trial.slip[0], re.trial.slip[1]};
+    f->lines.push_back(l);
   }
   PetscCall(RestoreLocalX(a, &Xl, &x));
-  PetscCall(GatherToZero(a->comm, mine, all));
-  PetscCall(GatherToZero(a->comm, jmine, jall));
-  PetscCall(AssemblyGatherRecords(a, rec));
-  if (a->rank != 0) PetscFunctionReturn(0);
-  // Parts in the user's numbering, whatever patches they were cut into: a cut part's patches put
-  // their mesh nodes back at their numbers in the part.
-  std::map<PetscInt, PartField> byPart;
-  for (size_t pos = 0; pos < all.size();) {
-    const PetscInt    index = (PetscInt)all[pos], n = (PetscInt)all[pos + 1];
-    const double     *dof   = all.data() + pos + 2;
-    const ShellPatch &sp    = a->layout.shells.at(index);
-    PartField        &f     = byPart[sp.id];
-    if (f.x.empty()) {
-      auto            cut = a->layout.cut_parts.find(sp.id);
-      const QuadMesh &m   = cut == a->layout.cut_parts.end() ? sp.mesh : cut->second;
-      f.id                = sp.id;
-      f.x                 = m.x;
-      f.quads             = m.quads;
-      f.dof.assign(6 * m.x.size(), 0.0);
+  if (!results) PetscFunctionReturn(0);
+  // The other patches' nodes of the shared elements: through the natural vectors.
+  Vec U, R;
+  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->u, &U));
+  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->r, &R));
+  PetscCall(VecScatterBegin(m.ghost_scatter, U, m.ghost_u, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(m.ghost_scatter, U, m.ghost_u, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterBegin(m.ghost_scatter, R, m.ghost_r, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(m.ghost_scatter, R, m.ghost_r, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecDestroy(&U));
+  PetscCall(VecDestroy(&R));
+  const PetscScalar *gu, *gr;
+  PetscCall(VecGetArrayRead(m.ghost_u, &gu));
+  PetscCall(VecGetArrayRead(m.ghost_r, &gr));
+  PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    f->results.reserve(m.elements.size());
+    for (const FieldElement &e : m.elements) {
+      const ShellPatch   &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
+      const double       *d  = disp[e.owned].data();
+      shell::ElementVector ue;
+      for (int k = 0; k < e.nn; ++k)
+        for (int c = 0; c < 3; ++c) {
+          const PetscInt g = e.local[k] < 0 ? m.ghost_index.at(e.node[k]) : -1;
+          ue[6 * k + c]     = g < 0 ? d[6 * e.local[k] + c] : gu[3 * g + c];
+          ue[6 * k + 3 + c] = g < 0 ? d[6 * e.local[k] + 3 + c] : gr[3 * g + c];
+        }
+      shell::ElementOptions o;
+      o.drill = sp.drill; // the options of the patch operator (patch/operator.cpp)
+      f->results.push_back(shell::ElementResults(e.X, nullptr, sp.material, o, ue));
     }
-    for (size_t l = 0; l < sp.mesh.x.size(); ++l) {
-      const size_t node = sp.part_node.empty() ? l : (size_t)sp.part_node[l];
-      std::copy(dof + 6 * l, dof + 6 * (l + 1), f.dof.begin() + 6 * node);
-    }
-    pos += 2 + n;
-  }
-  for (auto &kv : byPart) parts.push_back(std::move(kv.second));
-  std::map<PetscInt, const JointRecord *> byId;
-  for (const JointRecord &r : rec) byId[r.joint] = &r;
-  for (const JointDof &d : jall) {
-    const JointComp &j = a->layout.joints.at(d.index);
-    JointLine        l;
-    l.id = j.id;
-    l.xa = AttachmentPoint(a, j, j.va, j.pnode_a);
-    l.xb = AttachmentPoint(a, j, j.vb, j.pnode_b);
-    std::copy(d.ua, d.ua + 6, l.ua.begin());
-    std::copy(d.ub, d.ub + 6, l.ub.begin());
-    std::copy(j.R, j.R + 9, l.R.begin());
-    const JointRecord *r = byId.at(j.id);
-    l.state              = r->state;
-    std::copy(r->jump, r->jump + 6, l.jump.begin());
-    std::copy(r->force, r->force + 6, l.force.begin());
-    lines.push_back(l);
-  }
-  std::sort(lines.begin(), lines.end(), [](const JointLine &l, const JointLine &r) { return l.id < r.id; });
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(VecRestoreArrayRead(m.ghost_u, &gu));
+  PetscCall(VecRestoreArrayRead(m.ghost_r, &gr));
   PetscFunctionReturn(0);
 }
 

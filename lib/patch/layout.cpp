@@ -184,17 +184,19 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     nodemap[v] = {first + cut.patch[v], local[v]};
   }
   std::map<std::pair<int, int>, Seam> seams;
-  for (const auto &q : part.mesh.quads) {
+  for (int e = 0; e < (int)part.mesh.quads.size(); ++e) {
+    const auto   &q = part.mesh.quads[e];
     std::set<int> in;
     for (int k = 0; k < 4; ++k) in.insert(cut.patch[q[k]]);
     if (in.size() == 1) {
       subs[*in.begin()].mesh.quads.push_back({local[q[0]], local[q[1]], local[q[2]], local[q[3]]});
+      subs[*in.begin()].part_elem.push_back(e);
       continue;
     }
     shell::Nodes X;
     for (int k = 0; k < 4; ++k) X[k] = part.mesh.x[q[k]];
     for (int s : in) {
-      ShellPatch::SharedElement el{X, {}};
+      ShellPatch::SharedElement el{X, {}, e, q};
       for (int k = 0; k < 4; ++k) el.node[k] = cut.patch[q[k]] == s ? local[q[k]] : -1;
       subs[s].shared.push_back(el);
     }
