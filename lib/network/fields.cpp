@@ -261,3 +261,83 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
 }
 
 } // namespace boltnet
+
+using namespace boltnet;
+
+// Collective. The owner of the element (the rank whose patch writes it, ElementsOf) broadcasts its
+// nodes' numbers in the part, coordinates and section; every rank adds the dof of those nodes that
+// its own patches hold; every rank then evaluates the element. Costs a pass over the part's
+// patches on this rank: for a whole model's results read fields.h5.
+PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly a, PetscInt part, PetscInt element, BoltnetFrame frame, BoltnetElementResult *out)
+{
+  struct Owned {
+    std::array<int, 4>   pn;
+    shell::Nodes         X;
+    shell::ShellMaterial material;
+    double               drill;
+  } el{};
+  PetscFunctionBeginUser;
+  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() first");
+  PetscCheck(frame == BOLTNET_FRAME_ELEMENT || frame == BOLTNET_FRAME_MATERIAL, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "Unknown frame %d (BOLTNET_FRAME_ELEMENT or BOLTNET_FRAME_MATERIAL)", (int)frame);
+  PetscMPIInt found = -1, owner;
+  bool        shellPart = false;
+  for (const OwnedPatch &op : a->patches.owned) {
+    if (!op.shell || a->layout.patches[op.index].id != part) continue;
+    const ShellPatch &sp = a->layout.shells.at(op.index);
+    ElementsOf(sp, [&](int elem, const std::array<int, 4> &, const std::array<int, 4> &pn, const shell::Nodes &X) {
+      if (elem != element) return;
+      el     = Owned{pn, X, sp.material, sp.drill};
+      found  = a->rank;
+    });
+  }
+  for (const PatchComp &p : a->layout.patches) shellPart = shellPart || (p.id == part && p.kind == static_cast<PetscInt>(PatchKind::Shell));
+  PetscCheck(shellPart, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "No shell patch with id %" PetscInt_FMT, part);
+  PetscCallMPI(MPI_Allreduce(&found, &owner, 1, MPI_INT, MPI_MAX, a->comm));
+  PetscCheck(owner >= 0, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "Shell patch %" PetscInt_FMT " has no element %" PetscInt_FMT, part, element);
+  PetscCallMPI(MPI_Bcast(&el, sizeof el, MPI_BYTE, owner, a->comm));
+  PetscReal          loc[28] = {0}, glob[28];
+  Vec                Xl;
+  const PetscScalar *x;
+  PetscCall(GetLocalX(a, a->X, &Xl, &x));
+  PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    for (const OwnedPatch &op : a->patches.owned) {
+      if (!op.shell || a->layout.patches[op.index].id != part) continue;
+      const ShellPatch   &sp = a->layout.shells.at(op.index);
+      std::vector<double> u;
+      for (int k = 0; k < 4; ++k) {
+        int l = el.pn[k];
+        if (!sp.part_node.empty()) l = (int)(std::find(sp.part_node.begin(), sp.part_node.end(), el.pn[k]) - sp.part_node.begin());
+        if (l < 0 || l >= (int)sp.mesh.x.size()) continue;
+        if (u.empty()) PetscCall(AssemblyPatchDisplacement(a, op, x, a->lambda, u));
+        for (int c = 0; c < 6; ++c) loc[6 * k + c] = u[6 * l + c];
+        loc[24 + k] += 1;
+      }
+    }
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(RestoreLocalX(a, &Xl, &x));
+  PetscCall(MPIU_Allreduce(loc, glob, 28, MPIU_REAL, MPIU_SUM, a->comm));
+  for (int k = 0; k < 4; ++k) PetscCheck(glob[24 + k] == 1, a->comm, PETSC_ERR_PLIB, "Node %d of element %" PetscInt_FMT " of patch %" PetscInt_FMT " is held %g times", el.pn[k], element, part, (double)glob[24 + k]);
+  shell::SectionResults r;
+  PetscCall(Guard(a->comm, [&] {
+    shell::ElementVector ue;
+    std::copy(glob, glob + 24, ue.begin());
+    shell::ElementOptions o;
+    o.drill = el.drill; // the options of the patch operator (patch/operator.cpp)
+    r       = shell::ElementResults(el.X, nullptr, el.material, o, ue);
+    if (frame == BOLTNET_FRAME_MATERIAL) r = shell::Rotated(r, shell::MaterialAngle(r, el.material));
+    return PetscErrorCode(0);
+  }));
+  for (int c = 0; c < 3; ++c) {
+    out->axes[c] = r.e1[c], out->axes[3 + c] = r.e2[c], out->axes[6 + c] = r.e3[c];
+    out->N[c] = r.N[c], out->M[c] = r.M[c];
+    out->strain_top[c] = r.strain_top[c], out->strain_bottom[c] = r.strain_bottom[c];
+    out->stress_top[c] = r.stress_top[c], out->stress_bottom[c] = r.stress_bottom[c];
+  }
+  out->Q[0] = r.Q[0], out->Q[1] = r.Q[1];
+  out->homogeneous      = r.homogeneous ? PETSC_TRUE : PETSC_FALSE;
+  out->von_mises_top    = shell::VonMises(r.stress_top);
+  out->von_mises_bottom = shell::VonMises(r.stress_bottom);
+  PetscFunctionReturn(0);
+}
