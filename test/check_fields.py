@@ -1,10 +1,16 @@
 #!/usr/bin/python3
-"""Check fields.xdmf + fields.h5 of a boltnet run (docs/output.md).
+"""Check fields.h5, fields.xdmf and joints.xdmf of a boltnet run (docs/output.md).
 
   check_fields.py DIR SCENE_JOINTS_CSV [--ref DIR1 [--rtol R]] [--fixed PART,AXIS,VALUE,DOFS]...
 
-- fields.xdmf parses as XML; every DataItem names a dataset of fields.h5 with exactly the declared
-  dimensions, number type and precision; topology sizes agree with NumberOfElements;
+- the xdmf files parse as XML (XDMF 3); every DataItem names a dataset of fields.h5 with exactly the
+  declared dimensions, data type and precision; topology sizes agree with NumberOfElements;
+- the numbering: every node of a part once (/shells/node_part, /shells/node: 0..n-1 per part), every
+  element of a part once (/shells/part, /shells/element), the cells' nodes in the cell's part;
+- the element results agree with one another: von Mises and principal stresses from the surface
+  stresses, the material-frame resultants the element-frame ones turned from /shells/element_axis to
+  /shells/material_axis;
+- with -output_joints_hdf5, each step's /joints/table equals joints.csv's rows;
 - one temporal step per converged step of joints.csv (rows = steps x joints), times increasing,
   each step's load factor (Information "load" and the HDF5 attribute) equal to joints.csv's;
 - independent of the writer: at every step, each joint line's endpoint displacements, differenced
@@ -47,6 +53,55 @@ def frame(row):
     return np.array([n, t, np.cross(n, t)])
 
 
+def check_numbering(h5):
+    """Every node and element of a part once, in the part's own numbering; cells within their part."""
+    npart, node = h5["/shells/node_part"][:, 0], h5["/shells/node"][:, 0]
+    cpart, elem = h5["/shells/part"][:, 0], h5["/shells/element"][:, 0]
+    cells = h5["/shells/cells"][:]
+    for p in np.unique(npart):
+        n = np.sort(node[npart == p])
+        if not np.array_equal(n, np.arange(len(n))):
+            fail(f"part {p}: its node numbers are not 0..{len(n) - 1} once each")
+        e = np.sort(elem[cpart == p])
+        if not np.array_equal(e, np.arange(len(e))):
+            fail(f"part {p}: its element numbers are not 0..{len(e) - 1} once each")
+    used = cells[cells >= 0]
+    if used.max() >= len(node) or (npart[cells] != cpart[:, None])[cells >= 0].any():
+        fail("a cell names a node outside its part")
+    print(f"check_fields: {len(node)} nodes and {len(elem)} elements of {len(np.unique(npart))} parts, each once")
+
+
+def check_results(h5, times):
+    """Element results consistent with one another at every step."""
+    ea, ma, nrm = h5["/shells/element_axis"][:], h5["/shells/material_axis"][:], h5["/shells/normal"][:]
+    c = np.einsum("ij,ij->i", ma, ea)
+    s = np.einsum("ij,ij->i", ma, np.cross(nrm, ea))
+    worst, nsteps = 0.0, 0
+    for t in times:
+        g = h5[f"/steps/{int(t):06d}/shells"]
+        if "N" not in g:
+            continue
+        nsteps += 1
+        for name in ("N", "M"):
+            a, b = g[name][:], g[name + "_element"][:]
+            xx = c * c * b[:, 0] + s * s * b[:, 1] + 2 * c * s * b[:, 2]
+            yy = s * s * b[:, 0] + c * c * b[:, 1] - 2 * c * s * b[:, 2]
+            xy = -c * s * b[:, 0] + c * s * b[:, 1] + (c * c - s * s) * b[:, 2]
+            scale = max(np.abs(b).max(), 1e-300)
+            worst = max(worst, np.abs(np.stack([xx, yy, xy], 1) - a).max() / scale)
+        for face in ("top", "bottom"):
+            st = g["stress_" + face][:]
+            vm = np.sqrt(st[:, 0] ** 2 - st[:, 0] * st[:, 1] + st[:, 1] ** 2 + 3 * st[:, 2] ** 2)
+            centre, radius = 0.5 * (st[:, 0] + st[:, 1]), np.hypot(0.5 * (st[:, 0] - st[:, 1]), st[:, 2])
+            scale = max(np.nanmax(np.abs(st)) if st.size else 0, 1e-300)
+            worst = max(worst, np.nanmax(np.abs(vm - g["von_mises_" + face][:])) / scale)
+            worst = max(worst, np.nanmax(np.abs(np.stack([centre + radius, centre - radius], 1) - g["principal_" + face][:])) / scale)
+    if worst > 1e-12:
+        fail(f"element results disagree with one another by {worst:g} of their scale")
+    if nsteps:
+        print(f"check_fields: element results of {nsteps} steps consistent (frames, von Mises, principal): {worst:.2g}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("dir")
@@ -56,39 +111,55 @@ def main():
     ap.add_argument("--fixed", action="append", default=[])
     args = ap.parse_args()
 
-    root = ET.parse(args.dir + "/fields.xdmf").getroot()
     h5 = h5py.File(args.dir + "/fields.h5", "r")
-
+    roots = {}
+    for name in ("fields.xdmf", "joints.xdmf"):
+        try:
+            roots[name] = ET.parse(f"{args.dir}/{name}").getroot()
+        except FileNotFoundError:
+            if name == "joints.xdmf" or "shells" in h5:
+                fail(f"{name} is missing")
+    for name, root in roots.items():
+        if root.get("Version") != "3.0":
+            fail(f"{name}: Xdmf Version {root.get('Version')}, not 3.0")
     # Every DataItem against the file.
     nitems = 0
-    for item in root.iter("DataItem"):
-        nitems += 1
-        fname, path = item.text.strip().split(":", 1)
-        if fname != "fields.h5":
-            fail(f"DataItem names file {fname}")
-            continue
-        if path not in h5:
-            fail(f"{path} is not in fields.h5")
-            continue
-        ds = h5[path]
-        dims = tuple(int(d) for d in item.get("Dimensions").split())
-        if ds.shape != dims:
-            fail(f"{path}: shape {ds.shape} in the file, {dims} in the xdmf")
-        kind = "i" if item.get("NumberType") == "Int" else "f"
-        if ds.dtype.kind != kind or ds.dtype.itemsize != int(item.get("Precision")):
-            fail(f"{path}: dtype {ds.dtype}, xdmf says {item.get('NumberType')} {item.get('Precision')}")
-    for topo in root.iter("Topology"):
-        item = topo.find("DataItem")
-        if int(item.get("Dimensions").split()[0]) != int(topo.get("NumberOfElements")):
-            fail(f"Topology {item.text.strip()}: NumberOfElements {topo.get('NumberOfElements')} vs {item.get('Dimensions')}")
+    for root in roots.values():
+        for item in root.iter("DataItem"):
+            nitems += 1
+            fname, path = item.text.strip().split(":", 1)
+            if fname != "fields.h5":
+                fail(f"DataItem names file {fname}")
+                continue
+            if path not in h5:
+                fail(f"{path} is not in fields.h5")
+                continue
+            ds = h5[path]
+            dims = tuple(int(d) for d in item.get("Dimensions").split())
+            if ds.shape != dims:
+                fail(f"{path}: shape {ds.shape} in the file, {dims} in the xdmf")
+            kind = "i" if item.get("DataType") == "Int" else "f"
+            if ds.dtype.kind != kind or ds.dtype.itemsize != int(item.get("Precision")):
+                fail(f"{path}: dtype {ds.dtype}, xdmf says {item.get('DataType')} {item.get('Precision')}")
+        for topo in root.iter("Topology"):
+            item = topo.find("DataItem")
+            if int(item.get("Dimensions").split()[0]) != int(topo.get("NumberOfElements")):
+                fail(f"Topology {item.text.strip()}: NumberOfElements {topo.get('NumberOfElements')} vs {item.get('Dimensions')}")
     print(f"check_fields: {nitems} DataItems match fields.h5")
 
-    temporal = root.find("Domain/Grid")
-    if temporal.get("GridType") != "Collection" or temporal.get("CollectionType") != "Temporal":
-        fail("the top grid is not a temporal collection")
-    steps = temporal.findall("Grid")
+    grids = {}
+    for name, root in roots.items():
+        temporal = root.find("Domain/Grid")
+        if temporal.get("GridType") != "Collection" or temporal.get("CollectionType") != "Temporal":
+            fail(f"{name}: the top grid is not a temporal collection")
+        grids[name] = temporal.findall("Grid")
+        if any(g.get("GridType") != "Uniform" for g in grids[name]):
+            fail(f"{name}: a step is not a uniform grid")
+    steps = grids["joints.xdmf"]
     times = [float(g.find("Time").get("Value")) for g in steps]
     loads = [float(g.find("Information[@Name='load']").get("Value")) for g in steps]
+    if "fields.xdmf" in grids and [float(g.find("Time").get("Value")) for g in grids["fields.xdmf"]] != times:
+        fail("fields.xdmf and joints.xdmf do not hold the same steps")
     if any(b <= a for a, b in zip(times, times[1:])):
         fail("times are not increasing")
 
@@ -131,15 +202,33 @@ def main():
         fail(f"joint line displacements differ from the jumps of joints.csv by {maxerr:g} (largest jump {scale:g})")
     print(f"check_fields: {len(steps)} steps, {njoints} joints; line endpoints vs jumps: max difference {maxerr:.3g} (largest jump {scale:.3g})")
 
+    # joints.csv as an HDF5 table (-output_joints_hdf5).
+    ntables = 0
+    for t in times:
+        g = h5[f"/steps/{int(t):06d}/joints"]
+        if "table" not in g:
+            continue
+        ntables += 1
+        byjoint = {int(q["joint"]): q for q in bystep.get(int(t), [])}
+        for row in g["table"][:]:
+            r = byjoint[int(row[0])]
+            ref = [STATES[r["state"]]] + [float(r[k]) for k in ("du_n", "du_t1", "du_t2", "f_n", "f_t1", "f_t2", "bearing", "slip_t1", "slip_t2")]
+            if np.abs(row[1:] - np.array(ref)).max() > 1e-12 * max(1.0, np.abs(ref).max()):
+                fail(f"step {int(t)} joint {int(row[0])}: table row {row[1:]} vs joints.csv {ref}")
+    if ntables:
+        print(f"check_fields: {ntables} steps' /joints/table equal joints.csv")
+
+    if "shells" in h5:
+        check_numbering(h5)
+        check_results(h5, times)
+
     # Fixed dof.
     dofnames = ["ux", "uy", "uz", "rx", "ry", "rz"]
     for spec in args.fixed:
         part, axis, value, dofs = spec.split(",")
         dofs = list(range(6)) if dofs == "all" else [dofnames.index(d) for d in dofs.split(":")]
         x = h5["/shells/coordinates"][:]
-        quads = h5["/shells/quads"][:]
-        cellpart = h5["/shells/part"][:, 0]
-        nodes = np.unique(quads[cellpart == int(part)])
+        nodes = np.flatnonzero(h5["/shells/node_part"][:, 0] == int(part))
         nodes = nodes[np.abs(x[nodes, "xyz".index(axis)] - float(value)) < 1e-9]
         if len(nodes) == 0:
             fail(f"--fixed {spec}: no node")
