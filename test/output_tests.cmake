@@ -36,10 +36,22 @@ set_tests_properties(fig3a_fields_np3 PROPERTIES FIXTURES_REQUIRED "fig3a_np1;fi
 add_test(NAME fig3a_meshio_np2 COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_meshio.py ${BOLTNET_OUT}/fig3a_np2)
 set_tests_properties(fig3a_meshio_np2 PROPERTIES FIXTURES_REQUIRED fig3a_np2)
 
-# A scene name with every character XML escapes (and a control character, which XML cannot hold)
-# still gives valid xdmf files, which meshio and the checker read; with -output_joints_hdf5 each
-# step's /joints/table equals joints.csv. Eight shell parts and twelve joints on 2 ranks.
+# A scene name with every character XML escapes (and a tab, which an attribute value keeps only as a
+# character reference) still gives valid xdmf files, which meshio and the checker read; with
+# -output_joints_hdf5 each step's /joints/table equals joints.csv. lap-rows on 2 ranks: eight shell
+# parts and their joints.
 boltnet_run(odd_name 2 ${BOLTNET_SCENES}/lap-rows.yaml -load_steps 3 -output_joints_hdf5 -scene_name "a<b>&c\"d'e\tf")
 add_test(NAME odd_name_fields COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fields.py ${BOLTNET_OUT}/odd_name_np2 ${BOLTNET_SCENES}/lap-rows.joints.csv)
 add_test(NAME odd_name_meshio COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_meshio.py ${BOLTNET_OUT}/odd_name_np2)
 set_tests_properties(odd_name_fields odd_name_meshio PROPERTIES FIXTURES_REQUIRED odd_name_np2)
+
+# Bypass (bypass.csv): a fastener that carries nothing in a strip in uniform tension passes the whole
+# running load (closed form, 1 and 2 ranks); lap-rows' bearing loads are joints.csv's forces, the
+# rows follow the force balance, and 2 ranks write what 1 rank writes.
+foreach(ranks 1 2)
+  boltnet_run(strip_bypass ${ranks} ${BOLTNET_TEST_SCENES}/strip-bypass.yaml -output_bypass_width 30)
+  add_test(NAME strip_bypass_np${ranks} COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/strip_bypass_np${ranks} --uniform 144)
+  set_tests_properties(strip_bypass_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_bypass_np${ranks})
+endforeach()
+add_test(NAME lap_rows_bypass COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_np2 --ref ${BOLTNET_OUT}/lap_rows_np1)
+set_tests_properties(lap_rows_bypass PROPERTIES FIXTURES_REQUIRED "lap_rows_np1;lap_rows_np2")

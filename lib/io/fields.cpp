@@ -4,11 +4,15 @@
 // called once, to silence its error printing.
 #include "io/io.hpp"
 #include "io/xdmf.hpp"
+#include "network/gather.hpp"
 
 #include <petscviewerhdf5.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <functional>
 #include <sstream>
 
@@ -281,6 +285,30 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
   PetscFunctionReturn(0);
 }
 
+// bypass.csv: the rows of every rank gathered to rank 0 (small, like joints.csv), by joint and side.
+PetscErrorCode WriteBypass(BoltnetAssembly a, FieldsFile *ff, const StepInfo &info, const StepFields &f)
+{
+  std::vector<BypassRow> mine, all;
+  PetscFunctionBeginUser;
+  if (ff->map.bypass_width == 0) PetscCall(FieldMapBypassRegions(a, ff->map, ff->opt.bypass_width > 0 ? ff->opt.bypass_width : 6 * a->opt.coupling_radius));
+  PetscCall(AssemblyBypass(a, ff->map, f, mine));
+  PetscCall(GatherToZero(a->comm, mine, all));
+  if (a->rank != 0) PetscFunctionReturn(0);
+  std::sort(all.begin(), all.end(), [](const BypassRow &l, const BypassRow &r) { return l.joint != r.joint ? l.joint < r.joint : l.side < r.side; });
+  const std::string path = ff->dir + "/bypass.csv";
+  if (!ff->bypass) {
+    ff->bypass = std::fopen(path.c_str(), "w");
+    PetscCheck(ff->bypass, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s: %s", path.c_str(), std::strerror(errno));
+    std::fprintf(ff->bypass, "step,load,joint,sheet,part,bearing,dx,dy,dz,n_avg,width,bypass_flux,bypass_load,elements\n");
+  }
+  errno = 0;
+  bool ok = true;
+  for (const BypassRow &b : all)
+    ok = ok && std::fprintf(ff->bypass, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT "\n", info.step, (double)info.load, b.joint, b.side ? "b" : "a", b.part, b.bearing, b.d[0], b.d[1], b.d[2], b.n_avg, b.width, b.flux, b.load, b.elements) >= 0;
+  PetscCheck(ok && std::fflush(ff->bypass) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", path.c_str(), std::strerror(errno));
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o)
@@ -289,6 +317,8 @@ PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject
   PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5, fields.xdmf and joints.xdmf per converged step (shell displacement/rotation and element results, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", o->fields, &o->fields, nullptr));
   PetscCall(PetscOptionsBool("-output_stresses", "With the fields, the element resultants N, M, Q, surface strains and stresses of every step", "", o->results, &o->results, nullptr));
   PetscCall(PetscOptionsBool("-output_joints_hdf5", "With the fields, the joints.csv table of every step also as the dataset /steps/NNNNNN/joints/table of fields.h5", "", o->joints_hdf5, &o->joints_hdf5, nullptr));
+  PetscCall(PetscOptionsReal("-output_bypass_width", "Width w (mm) of the strip whose force balance gives the bypass load in bypass.csv; 0: 6 -coupling_radius", "", o->bypass_width, &o->bypass_width, nullptr));
+  PetscCheck(o->bypass_width >= 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-output_bypass_width %g: a width must be positive (or 0 for the default)", (double)o->bypass_width);
   PetscCall(PetscOptionsBool("-output_fields_gather", "Write the fields from rank 0 after gathering them (the former writer, kept to measure against; displacements only)", "", o->gather, &o->gather, nullptr));
   PetscFunctionReturn(0);
 }
@@ -329,6 +359,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
   PetscCall(PetscViewerFlush(v));
   ff->steps.emplace_back(info.step, info.load);
   if (a->rank == 0) PetscCall(WriteXdmf(*ff));
+  if (ff->opt.results && ff->map.nodes.nglobal > 0) PetscCall(WriteBypass(a, ff, info, f));
   PetscFunctionReturn(0);
 }
 
@@ -337,6 +368,11 @@ PetscErrorCode FieldsClose(FieldsFile *ff)
   PetscFunctionBeginUser;
   PetscCall(PetscViewerDestroy(&ff->viewer));
   if (ff->mapped) PetscCall(FieldMapDestroy(&ff->map));
+  if (ff->bypass) {
+    const bool closed = std::fclose(ff->bypass) == 0;
+    ff->bypass        = nullptr;
+    PetscCheck(closed, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s/bypass.csv: %s", ff->dir.c_str(), std::strerror(errno));
+  }
   ff->mapped = false;
   PetscFunctionReturn(0);
 }

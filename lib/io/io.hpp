@@ -45,6 +45,7 @@ struct FieldsOptions {
   PetscBool results = PETSC_TRUE;  // -output_stresses: element resultants, strains and stresses
   PetscBool joints_hdf5 = PETSC_FALSE; // -output_joints_hdf5: the joints.csv table per step in fields.h5
   PetscBool gather  = PETSC_FALSE; // -output_fields_gather: the writer that gathers to rank 0
+  PetscReal bypass_width = 0;      // -output_bypass_width (mm); 0: 6 -coupling_radius (3 diameters)
 };
 struct FieldsFile {
   std::string   dir, scene;
@@ -54,6 +55,7 @@ struct FieldsFile {
   PetscViewer   viewer = nullptr;                      // fields.h5, open from the first step on
   FieldMap      map;                                   // the parallel writer's numbering
   bool          mapped = false;
+  FILE         *bypass = nullptr;                      // bypass.csv (rank 0), with the element results
 };
 // Collective: the step's fields into fields.h5, then (rank 0) the xdmf files rewritten for every
 // step so far.
@@ -61,7 +63,8 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
 // Rank 0 only: the same from the fields gathered to rank 0 (io/fields_gather.cpp).
 PetscErrorCode FieldsWriteStepGather(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
 PetscErrorCode FieldsClose(FieldsFile *ff);
-// Reads -output_fields, -output_stresses, -output_joints_hdf5, -output_fields_gather (inside the
+// Reads -output_fields, -output_stresses, -output_joints_hdf5, -output_bypass_width,
+// -output_fields_gather (inside the
 // caller's PetscOptionsBegin/End, so that -help lists them).
 PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o);
 

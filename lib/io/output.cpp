@@ -122,6 +122,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
     std::filesystem::remove(dir + "/summary.json", ec);
     std::filesystem::remove(dir + "/fields.xdmf", ec);
     std::filesystem::remove(dir + "/joints.xdmf", ec);
+    std::filesystem::remove(dir + "/bypass.csv", ec);
     std::filesystem::remove(dir + "/fields.h5", ec);
     out->csv = std::fopen((dir + "/joints.csv").c_str(), "w");
     ok       = out->csv ? 1 : 0;

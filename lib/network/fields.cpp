@@ -142,6 +142,9 @@ PetscErrorCode FieldMapDestroy(FieldMap *m)
   PetscCall(VecScatterDestroy(&m->ghost_scatter));
   PetscCall(VecDestroy(&m->ghost_u));
   PetscCall(VecDestroy(&m->ghost_r));
+  PetscCall(VecScatterDestroy(&m->bypass_scatter));
+  PetscCall(VecDestroy(&m->bypass_sums));
+  PetscCall(VecDestroy(&m->bypass_local));
   *m = FieldMap{};
   PetscFunctionReturn(0);
 }

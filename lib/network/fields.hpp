@@ -49,6 +49,12 @@ struct FieldMap {
   std::map<PetscInt, PetscInt>       ghost_index;      //   and their positions
   VecScatter                         ghost_scatter = nullptr; // natural (block 3) -> ghosts
   Vec                                ghost_u = nullptr, ghost_r = nullptr;
+  // Bypass (network/fields_bypass.cpp): (owned element, slot 2 joint index + side) of each element
+  // in the averaging region of a joint's side, and the scatter of the sums to the joints' ranks.
+  double                               bypass_width = 0;
+  std::vector<std::array<PetscInt, 2>> bypass_members;
+  VecScatter                           bypass_scatter = nullptr;
+  Vec                                  bypass_sums = nullptr, bypass_local = nullptr;
 };
 
 // Collective. The map of the assembly's shell output (nothing to write when part_ids is empty).
@@ -82,6 +88,18 @@ struct StepFields {
 };
 // Collective: the last converged point a->X. With results false, no element results.
 PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, StepFields *f);
+
+// The bypass load beside each fastener (docs/output.md, "Bypass"), one row per joint side on a shell
+// part, for the joints this rank owns.
+struct BypassRow {
+  PetscInt joint, side, part, elements; // side 0: patch a, 1: patch b; elements averaged
+  double   bearing;                     // |in-plane force of the fastener on the sheet| (N)
+  double   d[3];                        // its direction (global), t1 when it is zero
+  double   n_avg, width, flux, load;    // d.N.d averaged (N/mm), w (mm), bypass flux (N/mm), flux w (N)
+};
+// Collective. The averaging regions (once, width w in mm) and each step's rows from f's results.
+PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width);
+PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &f, std::vector<BypassRow> &rows);
 
 // The material frame of an owned element (the section law's, resultants.hpp).
 const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e);
