@@ -36,7 +36,6 @@ PetscErrorCode WriteReals(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, Pets
   PetscFunctionBeginUser;
   PetscCall(FieldSpaceNatural(comm, s, bs, owned, &v));
   PetscCall(View(v, name, viewer));
-  PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);
 }
 
@@ -54,7 +53,6 @@ PetscErrorCode WriteRealsAs(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, Pe
   PetscCall(View(w, name, viewer));
   PetscCall(VecDestroy(&w));
   PetscCall(VecRestoreArrayRead(v, &p));
-  PetscCall(VecDestroy(&v));
   PetscFunctionReturn(0);
 }
 
@@ -71,7 +69,6 @@ PetscErrorCode WriteInts(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, Petsc
   PetscCall(VecGetArrayRead(v, &p));
   std::vector<PetscInt> ints(p, p + n);
   PetscCall(VecRestoreArrayRead(v, &p));
-  PetscCall(VecDestroy(&v));
   PetscCall(ISCreateGeneral(comm, n, ints.data(), PETSC_COPY_VALUES, &is));
   PetscCall(ISSetBlockSize(is, bs));
   PetscCall(PetscObjectSetName((PetscObject)is, name));
@@ -285,15 +282,21 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
   PetscFunctionReturn(0);
 }
 
-// bypass.csv: the rows of every rank gathered to rank 0 (small, like joints.csv), by joint and side.
-PetscErrorCode WriteBypass(BoltnetAssembly a, FieldsFile *ff, const StepInfo &info, const StepFields &f)
+// The bypass rows of every rank gathered to rank 0 (small, like joints.csv's records). Collective.
+PetscErrorCode GatherBypass(BoltnetAssembly a, FieldsFile *ff, const StepFields &f, std::vector<BypassRow> &all)
 {
-  std::vector<BypassRow> mine, all;
+  std::vector<BypassRow> mine;
   PetscFunctionBeginUser;
   if (ff->map.bypass_width == 0) PetscCall(FieldMapBypassRegions(a, ff->map, ff->opt.bypass_width > 0 ? ff->opt.bypass_width : 6 * a->opt.coupling_radius));
   PetscCall(AssemblyBypass(a, ff->map, f, mine));
   PetscCall(GatherToZero(a->comm, mine, all));
-  if (a->rank != 0) PetscFunctionReturn(0);
+  PetscFunctionReturn(0);
+}
+
+// bypass.csv (rank 0), by joint and side.
+PetscErrorCode WriteBypass(FieldsFile *ff, const StepInfo &info, std::vector<BypassRow> &all)
+{
+  PetscFunctionBeginUser;
   std::sort(all.begin(), all.end(), [](const BypassRow &l, const BypassRow &r) { return l.joint != r.joint ? l.joint < r.joint : l.side < r.side; });
   const std::string path = ff->dir + "/bypass.csv";
   if (!ff->bypass) {
@@ -358,8 +361,13 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
   PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "step", PETSC_INT, &info.step));
   PetscCall(PetscViewerFlush(v));
   ff->steps.emplace_back(info.step, info.load);
+  // Everything collective is done before rank 0 writes its files alone: an error there must not
+  // leave the other ranks waiting in a collective call (OutputStep shares it).
+  std::vector<BypassRow> bypass;
+  const bool             withBypass = ff->opt.results && ff->map.nodes.nglobal > 0;
+  if (withBypass) PetscCall(GatherBypass(a, ff, f, bypass));
   if (a->rank == 0) PetscCall(WriteXdmf(*ff));
-  if (ff->opt.results && ff->map.nodes.nglobal > 0) PetscCall(WriteBypass(a, ff, info, f));
+  if (a->rank == 0 && withBypass) PetscCall(WriteBypass(ff, info, bypass));
   PetscFunctionReturn(0);
 }
 

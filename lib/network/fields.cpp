@@ -137,8 +137,11 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
 PetscErrorCode FieldMapDestroy(FieldMap *m)
 {
   PetscFunctionBeginUser;
-  for (FieldSpace *s : {&m->nodes, &m->elems, &m->joints})
+  for (FieldSpace *s : {&m->nodes, &m->elems, &m->joints}) {
     for (auto &kv : s->scatter) PetscCall(VecScatterDestroy(&kv.second));
+    for (auto &kv : s->vecs)
+      for (Vec &v : kv.second) PetscCall(VecDestroy(&v));
+  }
   PetscCall(VecScatterDestroy(&m->ghost_scatter));
   PetscCall(VecDestroy(&m->ghost_u));
   PetscCall(VecDestroy(&m->ghost_r));
@@ -151,27 +154,26 @@ PetscErrorCode FieldMapDestroy(FieldMap *m)
 
 PetscErrorCode FieldSpaceNatural(MPI_Comm comm, FieldSpace &s, PetscInt bs, const std::vector<double> &owned, Vec *natural)
 {
-  Vec x;
   PetscFunctionBeginUser;
   PetscCheck((PetscInt)owned.size() == bs * s.nlocal, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%zu values for %" PetscInt_FMT " items of block size %" PetscInt_FMT, owned.size(), s.nlocal, bs);
-  PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &x));
-  PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, natural));
-  VecScatter &sc = s.scatter[bs];
-  if (!sc) {
+  auto &v = s.vecs[bs];
+  if (!v[0]) {
     IS from, to;
+    PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v[0]));
+    PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v[1]));
     PetscCall(ISCreateStride(PETSC_COMM_SELF, bs * s.nlocal, bs * s.start, 1, &from));
     PetscCall(ISCreateBlock(PETSC_COMM_SELF, bs, s.nlocal, s.natural.data(), PETSC_COPY_VALUES, &to));
-    PetscCall(VecScatterCreate(x, from, *natural, to, &sc));
+    PetscCall(VecScatterCreate(v[0], from, v[1], to, &s.scatter[bs]));
     PetscCall(ISDestroy(&from));
     PetscCall(ISDestroy(&to));
   }
   PetscScalar *p;
-  PetscCall(VecGetArray(x, &p));
+  PetscCall(VecGetArray(v[0], &p));
   std::copy(owned.begin(), owned.end(), p);
-  PetscCall(VecRestoreArray(x, &p));
-  PetscCall(VecScatterBegin(sc, x, *natural, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(sc, x, *natural, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecDestroy(&x));
+  PetscCall(VecRestoreArray(v[0], &p));
+  PetscCall(VecScatterBegin(s.scatter[bs], v[0], v[1], INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(s.scatter[bs], v[0], v[1], INSERT_VALUES, SCATTER_FORWARD));
+  *natural = v[1];
   PetscFunctionReturn(0);
 }
 
@@ -227,15 +229,13 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   PetscCall(RestoreLocalX(a, &Xl, &x));
   if (!results) PetscFunctionReturn(0);
   // The other patches' nodes of the shared elements: through the natural vectors.
-  Vec U, R;
+  Vec U, R; // borrowed: the second call overwrites the first
   PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->u, &U));
-  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->r, &R));
   PetscCall(VecScatterBegin(m.ghost_scatter, U, m.ghost_u, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(m.ghost_scatter, U, m.ghost_u, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->r, &R));
   PetscCall(VecScatterBegin(m.ghost_scatter, R, m.ghost_r, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(m.ghost_scatter, R, m.ghost_r, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecDestroy(&U));
-  PetscCall(VecDestroy(&R));
   const PetscScalar *gu, *gr;
   PetscCall(VecGetArrayRead(m.ghost_u, &gu));
   PetscCall(VecGetArrayRead(m.ghost_r, &gr));

@@ -25,6 +25,7 @@ struct FieldSpace {
   PetscInt                       nlocal = 0, nglobal = 0, start = 0; // start: exclusive scan of nlocal
   std::vector<PetscInt>          natural;                            // by owned item
   std::map<PetscInt, VecScatter> scatter;                            // owned -> natural, by block size
+  std::map<PetscInt, std::array<Vec, 2>> vecs;                       // (owned, natural), by block size
 };
 
 // An element this rank writes (network/fields.cpp ElementsOf: the only code that enumerates them).
@@ -62,7 +63,9 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m);
 PetscErrorCode FieldMapDestroy(FieldMap *m);
 
 // Collective: a natural-order Vec (block size bs, as many rows as the rank owns) holding `owned`
-// (bs values per owned item of s, in owned order). The caller destroys it.
+// (bs values per owned item of s, in owned order). Borrowed: it belongs to s and is overwritten by
+// the next call with the same block size (kept, so that a step creates no Vec: every creation is
+// a collective layout set-up).
 PetscErrorCode FieldSpaceNatural(MPI_Comm comm, FieldSpace &s, PetscInt bs, const std::vector<double> &owned, Vec *natural);
 
 // A joint as a line between its attachment points on its two patches.
