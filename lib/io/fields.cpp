@@ -29,51 +29,51 @@ PetscErrorCode View(Vec v, const char name[], PetscViewer viewer)
   PetscFunctionReturn(0);
 }
 
-// bs values per owned item of s, written as dataset `name` in natural order.
-PetscErrorCode WriteReals(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, PetscInt bs, const std::vector<double> &owned, const char name[])
-{
-  Vec v;
-  PetscFunctionBeginUser;
-  PetscCall(FieldSpaceNatural(comm, s, bs, owned, &v));
-  PetscCall(View(v, name, viewer));
-  PetscFunctionReturn(0);
-}
+// One dataset among several of a space written together: bs values per item, real or integer
+// (PetscInt, moved as reals: exact below 2^53), or real rows of 6 written as two rows of 3 (a
+// joint's two endpoints).
+struct Column {
+  const char *name;
+  PetscInt    bs;
+  enum Kind { Real, Int, Pairs } kind;
+};
 
-// The same as rows of `view_bs` values (a joint's two endpoints: bs 6 viewed as two rows of 3).
-PetscErrorCode WriteRealsAs(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, PetscInt bs, PetscInt view_bs, const std::vector<double> &owned, const char name[])
+// The datasets `cols` of space s from `rows` (per owned item, the columns side by side), in one
+// scatter to natural order (or from `natural`, already scattered), each then written by VecView or
+// ISView: every rank its own rows.
+PetscErrorCode WritePacked(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, const std::vector<Column> &cols, const std::vector<double> &rows, Vec natural = nullptr)
 {
-  Vec                v, w;
-  const PetscScalar *p;
-  PetscInt           n;
+  PetscInt K = 0, first = 0;
   PetscFunctionBeginUser;
-  PetscCall(FieldSpaceNatural(comm, s, bs, owned, &v));
-  PetscCall(VecGetLocalSize(v, &n));
-  PetscCall(VecGetArrayRead(v, &p));
-  PetscCall(VecCreateMPIWithArray(comm, view_bs, n, PETSC_DETERMINE, p, &w));
-  PetscCall(View(w, name, viewer));
-  PetscCall(VecDestroy(&w));
-  PetscCall(VecRestoreArrayRead(v, &p));
-  PetscFunctionReturn(0);
-}
-
-// Integers (PetscInt) in natural order: moved as reals (exact below 2^53), written by ISView.
-PetscErrorCode WriteInts(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, PetscInt bs, const std::vector<PetscInt> &owned, const char name[])
-{
-  Vec                v;
-  IS                 is;
-  const PetscScalar *p;
-  PetscInt           n;
-  PetscFunctionBeginUser;
-  PetscCall(FieldSpaceNatural(comm, s, bs, std::vector<double>(owned.begin(), owned.end()), &v));
-  PetscCall(VecGetLocalSize(v, &n));
-  PetscCall(VecGetArrayRead(v, &p));
-  std::vector<PetscInt> ints(p, p + n);
-  PetscCall(VecRestoreArrayRead(v, &p));
-  PetscCall(ISCreateGeneral(comm, n, ints.data(), PETSC_COPY_VALUES, &is));
-  PetscCall(ISSetBlockSize(is, bs));
-  PetscCall(PetscObjectSetName((PetscObject)is, name));
-  PetscCall(ISView(is, viewer));
-  PetscCall(ISDestroy(&is));
+  for (const Column &c : cols) K += c.bs;
+  if (!natural) PetscCall(FieldSpaceNatural(comm, s, K, rows, &natural));
+  for (const Column &c : cols) {
+    Vec v;
+    PetscCall(FieldSpaceColumns(s, natural, K, first, c.bs, &v));
+    first += c.bs;
+    if (c.kind == Column::Real) {
+      PetscCall(View(v, c.name, viewer));
+      continue;
+    }
+    const PetscScalar *p;
+    const PetscInt     n = c.bs * s.nlocal;
+    PetscCall(VecGetArrayRead(v, &p));
+    if (c.kind == Column::Pairs) {
+      Vec w;
+      PetscCall(VecCreateMPIWithArray(comm, 3, n, PETSC_DETERMINE, p, &w));
+      PetscCall(View(w, c.name, viewer));
+      PetscCall(VecDestroy(&w));
+    } else {
+      std::vector<PetscInt> ints(p, p + n);
+      IS                    is;
+      PetscCall(ISCreateGeneral(comm, n, ints.data(), PETSC_COPY_VALUES, &is));
+      PetscCall(ISSetBlockSize(is, c.bs));
+      PetscCall(PetscObjectSetName((PetscObject)is, c.name));
+      PetscCall(ISView(is, viewer));
+      PetscCall(ISDestroy(&is));
+    }
+    PetscCall(VecRestoreArrayRead(v, &p));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -92,62 +92,47 @@ PetscErrorCode WriteMesh(BoltnetAssembly a, FieldsFile *ff, const StepFields &f)
   PetscViewer v    = ff->viewer;
   PetscFunctionBeginUser;
   if (m.nodes.nglobal > 0) {
-    std::vector<double>   x, normal, eaxis, maxis;
-    std::vector<PetscInt> part, pnode, cells, type, epart, elem;
+    std::vector<double> nodes, elems;
     for (size_t i = 0; i < m.node_src.size(); ++i) {
       const auto &[o, l]   = m.node_src[i];
       const ShellPatch &sp = a->layout.shells.at(a->patches.owned[o].index);
-      x.insert(x.end(), sp.mesh.x[l].begin(), sp.mesh.x[l].end());
-      part.push_back(sp.id);
-      pnode.push_back(m.nodes.natural[i] - m.node_off.at(sp.id));
+      nodes.insert(nodes.end(), sp.mesh.x[l].begin(), sp.mesh.x[l].end());
+      nodes.insert(nodes.end(), {(double)sp.id, (double)(m.nodes.natural[i] - m.node_off.at(sp.id))});
     }
     for (const FieldElement &e : m.elements) {
-      for (int k = 0; k < 4; ++k) cells.push_back(k < e.nn ? e.node[k] : -1);
-      type.push_back(e.type);
-      epart.push_back(e.part);
-      elem.push_back(e.elem);
+      for (int k = 0; k < 4; ++k) elems.push_back(k < e.nn ? (double)e.node[k] : -1.0);
+      elems.insert(elems.end(), {(double)e.type, (double)e.part, (double)e.elem});
       const shell::ElementFrame fr = shell::MakeElementFrame(e.X);
       shell::SectionResults     s{};
       s.e1 = fr.e1, s.e2 = fr.e2;
       const double phi = shell::MaterialAngle(s, FieldElementMaterial(a, e));
-      for (int c = 0; c < 3; ++c) {
-        normal.push_back(fr.e3[c]);
-        eaxis.push_back(fr.e1[c]);
-        maxis.push_back(std::cos(phi) * fr.e1[c] + std::sin(phi) * fr.e2[c]);
-      }
+      elems.insert(elems.end(), fr.e3.begin(), fr.e3.end());
+      elems.insert(elems.end(), fr.e1.begin(), fr.e1.end());
+      for (int c = 0; c < 3; ++c) elems.push_back(std::cos(phi) * fr.e1[c] + std::sin(phi) * fr.e2[c]);
     }
     PetscCall(PetscViewerHDF5PushGroup(v, "/shells"));
-    PetscCall(WriteReals(comm, v, m.nodes, 3, x, "coordinates"));
-    PetscCall(WriteInts(comm, v, m.nodes, 1, part, "node_part"));
-    PetscCall(WriteInts(comm, v, m.nodes, 1, pnode, "node"));
-    PetscCall(WriteInts(comm, v, m.elems, 4, cells, "cells"));
-    PetscCall(WriteInts(comm, v, m.elems, 1, type, "cell_type"));
-    PetscCall(WriteInts(comm, v, m.elems, 1, epart, "part"));
-    PetscCall(WriteInts(comm, v, m.elems, 1, elem, "element"));
-    PetscCall(WriteReals(comm, v, m.elems, 3, normal, "normal"));
-    PetscCall(WriteReals(comm, v, m.elems, 3, eaxis, "element_axis"));
-    PetscCall(WriteReals(comm, v, m.elems, 3, maxis, "material_axis"));
+    PetscCall(WritePacked(comm, v, m.nodes, {{"coordinates", 3, Column::Real}, {"node_part", 1, Column::Int}, {"node", 1, Column::Int}}, nodes));
+    PetscCall(WritePacked(comm, v, m.elems,
+                          {{"cells", 4, Column::Int}, {"cell_type", 1, Column::Int}, {"part", 1, Column::Int}, {"element", 1, Column::Int}, {"normal", 3, Column::Real}, {"element_axis", 3, Column::Real}, {"material_axis", 3, Column::Real}}, elems));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
-  std::vector<double>   jx;
-  std::vector<PetscInt> id;
+  std::vector<double> joints;
   for (const JointLine &l : f.lines) {
-    jx.insert(jx.end(), l.xa.begin(), l.xa.end());
-    jx.insert(jx.end(), l.xb.begin(), l.xb.end());
-    id.push_back(l.id);
+    joints.insert(joints.end(), l.xa.begin(), l.xa.end());
+    joints.insert(joints.end(), l.xb.begin(), l.xb.end());
+    joints.push_back((double)l.id);
   }
   // The lines of the natural rows this rank writes: joint i runs from point 2i to point 2i + 1.
   std::vector<PetscInt> lines;
   for (PetscInt i = m.joints.start; i < m.joints.start + m.joints.nlocal; ++i) lines.insert(lines.end(), {2 * i, 2 * i + 1});
   IS is;
   PetscCall(PetscViewerHDF5PushGroup(v, "/joints"));
-  PetscCall(WriteRealsAs(comm, v, m.joints, 6, 3, jx, "coordinates"));
+  PetscCall(WritePacked(comm, v, m.joints, {{"coordinates", 6, Column::Pairs}, {"id", 1, Column::Int}}, joints));
   PetscCall(ISCreateGeneral(comm, (PetscInt)lines.size(), lines.data(), PETSC_COPY_VALUES, &is));
   PetscCall(ISSetBlockSize(is, 2));
   PetscCall(PetscObjectSetName((PetscObject)is, "lines"));
   PetscCall(ISView(is, v));
   PetscCall(ISDestroy(&is));
-  PetscCall(WriteInts(comm, v, m.joints, 1, id, "id"));
   PetscCall(PetscViewerHDF5PopGroup(v));
   PetscFunctionReturn(0);
 }
@@ -160,40 +145,35 @@ PetscErrorCode WriteResults(BoltnetAssembly a, FieldsFile *ff, const StepFields 
   FieldMap   &m    = ff->map;
   PetscViewer v    = ff->viewer;
   PetscFunctionBeginUser;
-  std::vector<double> N, M, Q, Ne, Me, Qe, et, eb, st, sb, vt, vb, pt, pb;
+  std::vector<double> rows;
+  rows.reserve(34 * f.results.size());
   for (size_t k = 0; k < f.results.size(); ++k) {
     const shell::SectionResults &e = f.results[k];
     const shell::SectionResults  r = shell::Rotated(e, shell::MaterialAngle(e, FieldElementMaterial(a, m.elements[k])));
-    N.insert(N.end(), r.N.begin(), r.N.end());
-    M.insert(M.end(), r.M.begin(), r.M.end());
-    Q.insert(Q.end(), r.Q.begin(), r.Q.end());
-    Ne.insert(Ne.end(), e.N.begin(), e.N.end());
-    Me.insert(Me.end(), e.M.begin(), e.M.end());
-    Qe.insert(Qe.end(), e.Q.begin(), e.Q.end());
-    et.insert(et.end(), r.strain_top.begin(), r.strain_top.end());
-    eb.insert(eb.end(), r.strain_bottom.begin(), r.strain_bottom.end());
-    st.insert(st.end(), r.stress_top.begin(), r.stress_top.end());
-    sb.insert(sb.end(), r.stress_bottom.begin(), r.stress_bottom.end());
-    vt.push_back(shell::VonMises(r.stress_top));
-    vb.push_back(shell::VonMises(r.stress_bottom));
-    const auto p = shell::Principal(r.stress_top), q = shell::Principal(r.stress_bottom);
-    pt.insert(pt.end(), p.begin(), p.end());
-    pb.insert(pb.end(), q.begin(), q.end());
+    const auto                   p = shell::Principal(r.stress_top), q = shell::Principal(r.stress_bottom);
+    for (const auto *c : {&r.N, &r.M}) rows.insert(rows.end(), c->begin(), c->end());
+    rows.insert(rows.end(), r.Q.begin(), r.Q.end());
+    for (const auto *c : {&e.N, &e.M}) rows.insert(rows.end(), c->begin(), c->end());
+    rows.insert(rows.end(), e.Q.begin(), e.Q.end());
+    for (const auto *c : {&r.strain_top, &r.strain_bottom, &r.stress_top, &r.stress_bottom}) rows.insert(rows.end(), c->begin(), c->end());
+    rows.insert(rows.end(), {shell::VonMises(r.stress_top), shell::VonMises(r.stress_bottom), p[0], p[1], q[0], q[1]});
   }
-  PetscCall(WriteReals(comm, v, m.elems, 3, N, "N"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, M, "M"));
-  PetscCall(WriteReals(comm, v, m.elems, 2, Q, "Q"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, Ne, "N_element"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, Me, "M_element"));
-  PetscCall(WriteReals(comm, v, m.elems, 2, Qe, "Q_element"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, et, "strain_top"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, eb, "strain_bottom"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, st, "stress_top"));
-  PetscCall(WriteReals(comm, v, m.elems, 3, sb, "stress_bottom"));
-  PetscCall(WriteReals(comm, v, m.elems, 1, vt, "von_mises_top"));
-  PetscCall(WriteReals(comm, v, m.elems, 1, vb, "von_mises_bottom"));
-  PetscCall(WriteReals(comm, v, m.elems, 2, pt, "principal_top"));
-  PetscCall(WriteReals(comm, v, m.elems, 2, pb, "principal_bottom"));
+  PetscCall(WritePacked(comm, v, m.elems,
+                        {{"N", 3, Column::Real},
+                         {"M", 3, Column::Real},
+                         {"Q", 2, Column::Real},
+                         {"N_element", 3, Column::Real},
+                         {"M_element", 3, Column::Real},
+                         {"Q_element", 2, Column::Real},
+                         {"strain_top", 3, Column::Real},
+                         {"strain_bottom", 3, Column::Real},
+                         {"stress_top", 3, Column::Real},
+                         {"stress_bottom", 3, Column::Real},
+                         {"von_mises_top", 1, Column::Real},
+                         {"von_mises_bottom", 1, Column::Real},
+                         {"principal_top", 2, Column::Real},
+                         {"principal_bottom", 2, Column::Real}},
+                        rows));
   PetscFunctionReturn(0);
 }
 
@@ -203,24 +183,19 @@ PetscErrorCode WriteJoints(BoltnetAssembly a, FieldsFile *ff, const StepFields &
   FieldMap   &m    = ff->map;
   PetscViewer v    = ff->viewer;
   PetscFunctionBeginUser;
-  std::vector<double>   u, fip, force, jump, table;
-  std::vector<PetscInt> state;
+  std::vector<double> rows;
   for (const JointLine &l : f.lines) {
-    u.insert(u.end(), l.ua.begin(), l.ua.begin() + 3);
-    u.insert(u.end(), l.ub.begin(), l.ub.begin() + 3);
-    state.push_back(l.state);
-    fip.push_back(std::hypot(l.force[1], l.force[2]));
-    force.insert(force.end(), l.force.begin(), l.force.begin() + 3);
-    jump.insert(jump.end(), l.jump.begin(), l.jump.begin() + 3);
+    rows.insert(rows.end(), l.ua.begin(), l.ua.begin() + 3);
+    rows.insert(rows.end(), l.ub.begin(), l.ub.begin() + 3);
+    rows.insert(rows.end(), {(double)l.state, std::hypot(l.force[1], l.force[2])});
+    rows.insert(rows.end(), l.force.begin(), l.force.begin() + 3);
+    rows.insert(rows.end(), l.jump.begin(), l.jump.begin() + 3);
     // The columns of joints.csv after step and load (the group's attributes); the state as its code.
-    table.insert(table.end(), {(double)l.id, (double)l.state, l.jump[0], l.jump[1], l.jump[2], l.force[0], l.force[1], l.force[2], (double)l.bearing, l.slip[0], l.slip[1]});
+    if (ff->opt.joints_hdf5) rows.insert(rows.end(), {(double)l.id, (double)l.state, l.jump[0], l.jump[1], l.jump[2], l.force[0], l.force[1], l.force[2], (double)l.bearing, l.slip[0], l.slip[1]});
   }
-  PetscCall(WriteRealsAs(comm, v, m.joints, 6, 3, u, "displacement"));
-  PetscCall(WriteInts(comm, v, m.joints, 1, state, "state"));
-  PetscCall(WriteReals(comm, v, m.joints, 1, fip, "in_plane_force"));
-  PetscCall(WriteReals(comm, v, m.joints, 3, force, "force"));
-  PetscCall(WriteReals(comm, v, m.joints, 3, jump, "jump"));
-  if (ff->opt.joints_hdf5) PetscCall(WriteReals(comm, v, m.joints, 11, table, "table"));
+  std::vector<Column> cols = {{"displacement", 6, Column::Pairs}, {"state", 1, Column::Int}, {"in_plane_force", 1, Column::Real}, {"force", 3, Column::Real}, {"jump", 3, Column::Real}};
+  if (ff->opt.joints_hdf5) cols.push_back({"table", 11, Column::Real});
+  PetscCall(WritePacked(comm, v, m.joints, cols, rows));
   PetscFunctionReturn(0);
 }
 
@@ -349,8 +324,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
   const std::string g = StepGroup(info.step);
   if (ff->map.nodes.nglobal > 0) {
     PetscCall(PetscViewerHDF5PushGroup(v, (g + "/shells").c_str()));
-    PetscCall(WriteReals(a->comm, v, ff->map.nodes, 3, f.u, "displacement"));
-    PetscCall(WriteReals(a->comm, v, ff->map.nodes, 3, f.r, "rotation"));
+    PetscCall(WritePacked(a->comm, v, ff->map.nodes, {{"displacement", 3, Column::Real}, {"rotation", 3, Column::Real}}, f.dof, f.dof_natural));
     if (ff->opt.results) PetscCall(WriteResults(a, ff, f));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }

@@ -121,12 +121,11 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
     const PetscInt ng = (PetscInt)m->ghosts.size();
     Vec            nat;
     IS             from, to;
-    PetscCall(CreateVec(comm, m->nodes.nlocal, m->nodes.nglobal, 3, &nat));
-    PetscCall(VecCreateSeq(PETSC_COMM_SELF, 3 * ng, &m->ghost_u));
-    PetscCall(VecDuplicate(m->ghost_u, &m->ghost_r));
-    PetscCall(ISCreateBlock(PETSC_COMM_SELF, 3, ng, m->ghosts.data(), PETSC_COPY_VALUES, &from));
-    PetscCall(ISCreateStride(PETSC_COMM_SELF, 3 * ng, 0, 1, &to));
-    PetscCall(VecScatterCreate(nat, from, m->ghost_u, to, &m->ghost_scatter));
+    PetscCall(CreateVec(comm, m->nodes.nlocal, m->nodes.nglobal, 6, &nat));
+    PetscCall(VecCreateSeq(PETSC_COMM_SELF, 6 * ng, &m->ghost_dof));
+    PetscCall(ISCreateBlock(PETSC_COMM_SELF, 6, ng, m->ghosts.data(), PETSC_COPY_VALUES, &from));
+    PetscCall(ISCreateStride(PETSC_COMM_SELF, 6 * ng, 0, 1, &to));
+    PetscCall(VecScatterCreate(nat, from, m->ghost_dof, to, &m->ghost_scatter));
     PetscCall(ISDestroy(&from));
     PetscCall(ISDestroy(&to));
     PetscCall(VecDestroy(&nat));
@@ -143,8 +142,7 @@ PetscErrorCode FieldMapDestroy(FieldMap *m)
       for (Vec &v : kv.second) PetscCall(VecDestroy(&v));
   }
   PetscCall(VecScatterDestroy(&m->ghost_scatter));
-  PetscCall(VecDestroy(&m->ghost_u));
-  PetscCall(VecDestroy(&m->ghost_r));
+  PetscCall(VecDestroy(&m->ghost_dof));
   PetscCall(VecScatterDestroy(&m->bypass_scatter));
   PetscCall(VecDestroy(&m->bypass_sums));
   PetscCall(VecDestroy(&m->bypass_local));
@@ -157,10 +155,10 @@ PetscErrorCode FieldSpaceNatural(MPI_Comm comm, FieldSpace &s, PetscInt bs, cons
   PetscFunctionBeginUser;
   PetscCheck((PetscInt)owned.size() == bs * s.nlocal, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%zu values for %" PetscInt_FMT " items of block size %" PetscInt_FMT, owned.size(), s.nlocal, bs);
   auto &v = s.vecs[bs];
-  if (!v[0]) {
+  if (!v[0]) PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v[0]));
+  if (!v[1]) PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v[1]));
+  if (!s.scatter[bs]) {
     IS from, to;
-    PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v[0]));
-    PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v[1]));
     PetscCall(ISCreateStride(PETSC_COMM_SELF, bs * s.nlocal, bs * s.start, 1, &from));
     PetscCall(ISCreateBlock(PETSC_COMM_SELF, bs, s.nlocal, s.natural.data(), PETSC_COPY_VALUES, &to));
     PetscCall(VecScatterCreate(v[0], from, v[1], to, &s.scatter[bs]));
@@ -177,6 +175,31 @@ PetscErrorCode FieldSpaceNatural(MPI_Comm comm, FieldSpace &s, PetscInt bs, cons
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FieldSpaceColumns(FieldSpace &s, Vec packed, PetscInt K, PetscInt first, PetscInt bs, Vec *out)
+{
+  PetscFunctionBeginUser;
+  if (K == bs) {
+    *out = packed;
+    PetscFunctionReturn(0);
+  }
+  Vec &v = s.vecs[bs][1];
+  if (!v) { // the first time for this block size: every rank gets here in the same order
+    MPI_Comm comm;
+    PetscCall(PetscObjectGetComm((PetscObject)packed, &comm));
+    PetscCall(CreateVec(comm, s.nlocal, s.nglobal, bs, &v));
+  }
+  const PetscScalar *p;
+  PetscScalar       *q;
+  PetscCall(VecGetArrayRead(packed, &p));
+  PetscCall(VecGetArray(v, &q));
+  for (PetscInt i = 0; i < s.nlocal; ++i)
+    for (PetscInt c = 0; c < bs; ++c) q[bs * i + c] = p[K * i + first + c];
+  PetscCall(VecRestoreArray(v, &q));
+  PetscCall(VecRestoreArrayRead(packed, &p));
+  *out = v;
+  PetscFunctionReturn(0);
+}
+
 const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e)
 {
   return a->layout.shells.at(a->patches.owned[e.owned].index).material;
@@ -187,8 +210,8 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   Vec                Xl;
   const PetscScalar *x;
   PetscFunctionBeginUser;
-  f->u.clear();
-  f->r.clear();
+  f->dof.clear();
+  f->dof_natural = nullptr;
   f->results.clear();
   f->lines.clear();
   // Before the first step the joints have no accepted response yet (as AssemblyGatherRecords).
@@ -200,13 +223,8 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   std::map<PetscInt, std::vector<double>> disp; // by position in the owned patches
   for (size_t i = 0; i < a->patches.owned.size(); ++i)
     if (a->patches.owned[i].shell) PetscCall(AssemblyPatchDisplacement(a, a->patches.owned[i], x, a->lambda, disp[(PetscInt)i]));
-  f->u.reserve(3 * m.node_src.size());
-  f->r.reserve(3 * m.node_src.size());
-  for (const auto &[i, l] : m.node_src) {
-    const double *d = disp[i].data() + 6 * l;
-    f->u.insert(f->u.end(), d, d + 3);
-    f->r.insert(f->r.end(), d + 3, d + 6);
-  }
+  f->dof.reserve(6 * m.node_src.size());
+  for (const auto &[i, l] : m.node_src) f->dof.insert(f->dof.end(), disp[i].data() + 6 * l, disp[i].data() + 6 * l + 6);
   for (size_t k = 0; k < js.size(); ++k) {
     const JointComp &j  = js.comp[k];
     const Response  &re = js.accepted[k];
@@ -229,16 +247,11 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   PetscCall(RestoreLocalX(a, &Xl, &x));
   if (!results) PetscFunctionReturn(0);
   // The other patches' nodes of the shared elements: through the natural vectors.
-  Vec U, R; // borrowed: the second call overwrites the first
-  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->u, &U));
-  PetscCall(VecScatterBegin(m.ghost_scatter, U, m.ghost_u, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(m.ghost_scatter, U, m.ghost_u, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 3, f->r, &R));
-  PetscCall(VecScatterBegin(m.ghost_scatter, R, m.ghost_r, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecScatterEnd(m.ghost_scatter, R, m.ghost_r, INSERT_VALUES, SCATTER_FORWARD));
-  const PetscScalar *gu, *gr;
-  PetscCall(VecGetArrayRead(m.ghost_u, &gu));
-  PetscCall(VecGetArrayRead(m.ghost_r, &gr));
+  PetscCall(FieldSpaceNatural(a->comm, m.nodes, 6, f->dof, &f->dof_natural)); // the writer's too
+  PetscCall(VecScatterBegin(m.ghost_scatter, f->dof_natural, m.ghost_dof, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(m.ghost_scatter, f->dof_natural, m.ghost_dof, INSERT_VALUES, SCATTER_FORWARD));
+  const PetscScalar *gd;
+  PetscCall(VecGetArrayRead(m.ghost_dof, &gd));
   PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     f->results.reserve(m.elements.size());
@@ -246,20 +259,17 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
       const ShellPatch   &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
       const double       *d  = disp[e.owned].data();
       shell::ElementVector ue;
-      for (int k = 0; k < e.nn; ++k)
-        for (int c = 0; c < 3; ++c) {
-          const PetscInt g = e.local[k] < 0 ? m.ghost_index.at(e.node[k]) : -1;
-          ue[6 * k + c]     = g < 0 ? d[6 * e.local[k] + c] : gu[3 * g + c];
-          ue[6 * k + 3 + c] = g < 0 ? d[6 * e.local[k] + 3 + c] : gr[3 * g + c];
-        }
+      for (int k = 0; k < e.nn; ++k) {
+        const PetscInt g = e.local[k] < 0 ? m.ghost_index.at(e.node[k]) : -1;
+        for (int c = 0; c < 6; ++c) ue[6 * k + c] = g < 0 ? d[6 * e.local[k] + c] : gd[6 * g + c];
+      }
       shell::ElementOptions o;
       o.drill = sp.drill; // the options of the patch operator (patch/operator.cpp)
       f->results.push_back(shell::ElementResults(e.X, nullptr, sp.material, o, ue));
     }
     PetscFunctionReturn(0);
   }));
-  PetscCall(VecRestoreArrayRead(m.ghost_u, &gu));
-  PetscCall(VecRestoreArrayRead(m.ghost_r, &gr));
+  PetscCall(VecRestoreArrayRead(m.ghost_dof, &gd));
   PetscFunctionReturn(0);
 }
 

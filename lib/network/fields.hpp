@@ -48,8 +48,8 @@ struct FieldMap {
   std::vector<FieldElement>          elements;         // by owned element
   std::vector<PetscInt>              ghosts;           // natural numbers of the other patches' nodes
   std::map<PetscInt, PetscInt>       ghost_index;      //   and their positions
-  VecScatter                         ghost_scatter = nullptr; // natural (block 3) -> ghosts
-  Vec                                ghost_u = nullptr, ghost_r = nullptr;
+  VecScatter                         ghost_scatter = nullptr; // natural (block 6) -> ghosts
+  Vec                                ghost_dof = nullptr;     // 6 per ghost node
   // Bypass (network/fields_bypass.cpp): (owned element, slot 2 joint index + side) of each element
   // in the averaging region of a joint's side, and the scatter of the sums to the joints' ranks.
   double                               bypass_width = 0;
@@ -61,6 +61,11 @@ struct FieldMap {
 // Collective. The map of the assembly's shell output (nothing to write when part_ids is empty).
 PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m);
 PetscErrorCode FieldMapDestroy(FieldMap *m);
+
+// Columns [first, first + bs) of a natural Vec of block size K (from FieldSpaceNatural) as a natural
+// Vec of block size bs, also borrowed from s (K == bs: packed itself). Collective only the first
+// time a block size is asked for: several datasets of one space travel in one scatter, side by side.
+PetscErrorCode FieldSpaceColumns(FieldSpace &s, Vec packed, PetscInt K, PetscInt first, PetscInt bs, Vec *out);
 
 // Collective: a natural-order Vec (block size bs, as many rows as the rank owns) holding `owned`
 // (bs values per owned item of s, in owned order). Borrowed: it belongs to s and is overwritten by
@@ -82,10 +87,11 @@ struct JointLine {
   std::array<double, 2> slip;
 };
 
-// One converged step, in owned order (u, r: 3 per owned node; results per owned element, in the
+// One converged step, in owned order (dof: 6 per owned node; results per owned element, in the
 // element frame; lines per owned joint, in the order of the rank's JointSet).
 struct StepFields {
-  std::vector<double>                u, r;
+  std::vector<double>                dof; // 6 per owned node: ux uy uz rx ry rz
+  Vec                                dof_natural = nullptr; // set when computed (borrowed from the map)
   std::vector<shell::SectionResults> results;
   std::vector<JointLine>             lines;
 };
