@@ -3,18 +3,25 @@ static const char help[] = "boltnet: bolted assemblies with frictional macroelem
 Runs a scene: a PETSc YAML options file plus the CSV tables it names (patches, fastener table,\n\
 boundary conditions), through its load path, and writes results under -output_dir:\n\
 joints.csv (one row per joint per converged step), summary.json and, for scenes with shell patches,\n\
-fields.h5 + fields.xdmf (shell displacement and rotation, joints as lines with their state, per\n\
-step; open fields.xdmf in ParaView: docs/output.md).\n\
+fields.h5, fields.xdmf, joints.xdmf and bypass.csv (shell displacement, rotation and element\n\
+results, joints as lines with their state, per step, written in parallel; open the xdmf files in\n\
+ParaView: docs/output.md).\n\
 \n\
   mpirun -n 2 build/bin/boltnet -scene share/scenes/fig3c.yaml\n\
+  mpirun -n 2 boltnet -scene fig3c        (installed: the scene share/boltnet/scenes/fig3c.yaml)\n\
   mpirun -n 3 build/bin/boltnet -scene share/scenes/fig3c.yaml -load_steps 4 -joint_monitor\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -joint_bolt_mu 0.3 -output_dir /tmp/mu03\n\
   build/bin/boltnet -scene share/scenes/fig3c.yaml -help      (every option, with defaults and units)\n\
+\n\
+A long run can keep a checkpoint every N converged steps (-checkpoint_every N) and, killed, go on\n\
+from it with the same command and -restart <output_dir>/checkpoint.h5 (docs/scenes.md).\n\
 \n\
 Options on the command line override the scene file. With -options_left, an option that nothing\n\
 used is an error.\n\n";
 
 #include "driver.hpp"
+#include "scene_path.hpp"
+#include "io/checkpoint.hpp"
 #include "io/io.hpp"
 #include "io/limits.hpp"
 #include "solver/loadpath.hpp"
@@ -45,8 +52,11 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
 {
   MPI_Comm        comm = PETSC_COMM_WORLD;
   char            file[PETSC_MAX_PATH_LEN] = "", outdir[PETSC_MAX_PATH_LEN] = "";
+  char            ckfile[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "";
   PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE;
   FieldsOptions   fields;
+  PetscInt        every = 0;
+  CheckpointIdentity ident;
   Scene           scene;
   LoadPath        path;
   Release         held;
@@ -57,10 +67,14 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsHasHelp(nullptr, &helpOnly));
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-options_left", &optionsLeft, nullptr));
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
-  PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options)", "", file, file, sizeof(file), &hasScene));
+  PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
   PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>)", "", outdir, outdir, sizeof(outdir), nullptr));
   PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &fields));
+  PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", every, &every, nullptr));
+  PetscCall(PetscOptionsString("-checkpoint_file", "The checkpoint file (default <output_dir>/checkpoint.h5), replaced whole at every checkpoint", "", ckfile, ckfile, sizeof(ckfile), nullptr));
+  PetscCall(PetscOptionsString("-restart", "Go on from this checkpoint: same scene and options (those that change results), results continued in -output_dir", "", restart, restart, sizeof(restart), nullptr));
   PetscOptionsEnd();
+  PetscCheck(every >= 0, comm, PETSC_ERR_USER_INPUT, "-checkpoint_every %" PetscInt_FMT " must be >= 0 (0: no checkpoint)", every);
   if (!hasScene && helpOnly) { // list the options that do not depend on a scene
     PetscCall(LoadPathFromOptions(comm, nullptr, &path));
     PetscCall(BoltnetAssemblyCreate(comm, &a));
@@ -69,7 +83,9 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     PetscFunctionReturn(0);
   }
   PetscCheck(hasScene, comm, PETSC_ERR_USER_INPUT, "No scene: give -scene <file.yaml> (e.g. -scene share/scenes/fig3c.yaml); -help lists the options");
-  PetscCall(SceneInsertOptionsFile(comm, file, &scene));
+  std::string found;
+  PetscCall(FindScene(comm, file, &found));
+  PetscCall(SceneInsertOptionsFile(comm, found.c_str(), &scene));
   PetscCall(SceneCheckOptionValues(comm));
 
   // Everything is read and checked before anything is written.
@@ -81,6 +97,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     PetscCheck(segments * path.steps_per_segment <= limits::kMaxLoadSteps, comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT " over %lld segment(s) of the load path is more than the limit of %lld steps (docs/scenes.md, \"Limits\")", path.steps_per_segment, (long long)segments, (long long)limits::kMaxLoadSteps);
   }
   PetscCall(BoltnetAssemblySetFromOptions(a));
+  if (!helpOnly && (every > 0 || restart[0])) PetscCall(CheckpointIdentify(a, scene.name, &ident)); // before the set-up takes the meshes
   PetscCall(BoltnetAssemblySetUp(a));
   PetscCall(SceneCheckUnusedOptions(comm));
   if (helpOnly) {
@@ -98,13 +115,25 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     }
   }
 
-  const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
-  PetscCall(OutputOpen(comm, dir, scene.name, fields, a, &out));
+  // A restart loads and checks the checkpoint and the results it continues before it writes anything.
+  const std::string dir  = outdir[0] ? std::string(outdir) : "results/" + scene.name;
+  const std::string ckpt = ckfile[0] ? std::string(ckfile) : dir + "/checkpoint.h5";
+  if (every > 0 && ckfile[0]) PetscCall(CheckpointCheckFile(comm, ckpt)); // the default's directory is -output_dir
+  if (restart[0]) {
+    PetscCall(CheckpointLoad(a, ident, restart, &out));
+    PetscCall(OutputResume(comm, dir, scene.name, fields, a, &out));
+  } else PetscCall(OutputOpen(comm, dir, scene.name, fields, a, &out));
   out.identified = "{" + scene.identified + "}";
-  a->on_step = [&out](BoltnetAssembly as, const StepInfo &info) { return OutputStep(as, info, &out); };
+  a->on_step = [&](BoltnetAssembly as, const StepInfo &info) {
+    PetscFunctionBeginUser;
+    PetscCall(OutputStep(as, info, &out));
+    if (every > 0 && info.step % every == 0) PetscCall(CheckpointWrite(as, ident, out, ckpt)); // after the step's results are on disk
+    PetscFunctionReturn(0);
+  };
   PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
   if (a->opt.condense) PetscCall(PetscPrintf(comm, "; condensed onto %" PetscInt_FMT " interface dof", a->net.ndof_global));
   PetscCall(PetscPrintf(comm, "\n"));
+  if (restart[0]) PetscCall(PetscPrintf(comm, "boltnet: restart from %s at step %zu, load factor %g\n", restart, a->steps.size(), (double)a->lambda));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
   // program exits 3. Any other error (a file that cannot be written, a library failure) goes up

@@ -4,6 +4,7 @@
 #pragma once
 #include "core/errors.hpp"
 #include "io/io.hpp"
+#include "stack.hpp"
 
 #include <petscsys.h>
 
@@ -77,7 +78,15 @@ int DriverMain(const char *program, int *argc, char ***argv, const char *help, R
   int      exitcode = 0;
   ErrorLog log;
   MPI_Comm agree = MPI_COMM_NULL;
+  const StackLimit stack = RaiseStackLimit(); // before any work: MUMPS's recursion (stack.hpp)
   if (PetscInitialize(argc, argv, nullptr, help)) return 1;
+  {
+    auto mb = [](rlim_t b) { return b == RLIM_INFINITY ? std::string("unlimited") : std::to_string((unsigned long long)(b >> 20)) + " MB"; };
+    if (PetscInfo(nullptr, "stack limit (soft): %s, now %s\n", mb(stack.before).c_str(), mb(stack.after).c_str())) return 1;
+    if (StackLimitTooSmall(stack) &&
+        PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "%s: warning: the stack limit is %s and the hard limit (ulimit -H -s) keeps it there: MUMPS's parallel factorisation of a large model may overflow it (docs/performance.md, \"Stack\")\n", program, mb(stack.after).c_str()))
+      return 1;
+  }
   if (PetscPushErrorHandler(CaptureErrorHandler, &log) || MPI_Comm_dup(PETSC_COMM_WORLD, &agree)) return 1;
   PetscErrorCode ierr;
   try {

@@ -2,6 +2,7 @@
 """Check fields.h5, fields.xdmf and joints.xdmf of a boltnet run (docs/output.md).
 
   check_fields.py DIR SCENE_JOINTS_CSV [--ref DIR1 [--rtol R]] [--fixed PART,AXIS,VALUE,DOFS]...
+                  [--elements quad|tri|mixed]
 
 - the xdmf files parse as XML (XDMF 3); every DataItem names a dataset of fields.h5 with exactly the
   declared dimensions, data type and precision; topology sizes agree with NumberOfElements;
@@ -19,7 +20,11 @@
 - --fixed: the nodes of shell part PART whose coordinate AXIS (x, y or z) equals VALUE have zero
   DOFS (colon-separated from ux uy uz rx ry rz, or all) at every step, and some node moves;
 - --ref DIR1: every dataset equals the one in DIR1 (another rank count) to R (default 1e-9) of its
-  quantity's scale (largest magnitude over all steps); integer datasets exactly.
+  quantity's scale (largest magnitude over all steps, or for a quantity the load leaves zero the
+  load's scale in its units); integer datasets exactly;
+- --elements quad|tri|mixed: the shells are quadrilaterals, triangles or both (/shells/cell_type),
+  the xdmf topology is Quadrilateral or, with triangles, Mixed (/shells/topology: per cell its type
+  code and nodes), and every shell node is a node of some element.
 """
 import argparse
 import csv
@@ -109,6 +114,7 @@ def main():
     ap.add_argument("--ref")
     ap.add_argument("--rtol", type=float, default=1e-9)
     ap.add_argument("--fixed", action="append", default=[])
+    ap.add_argument("--elements", choices=["quad", "tri", "mixed"])
     args = ap.parse_args()
 
     h5 = h5py.File(args.dir + "/fields.h5", "r")
@@ -143,7 +149,11 @@ def main():
                 fail(f"{path}: dtype {ds.dtype}, xdmf says {item.get('DataType')} {item.get('Precision')}")
         for topo in root.iter("Topology"):
             item = topo.find("DataItem")
-            if int(item.get("Dimensions").split()[0]) != int(topo.get("NumberOfElements")):
+            if topo.get("TopologyType") == "Mixed":  # a flat list: per cell its type code and nodes
+                types = h5["/shells/cell_type"][:, 0]
+                if len(types) != int(topo.get("NumberOfElements")) or int(item.get("Dimensions")) != int(np.sum(np.where(types == 4, 4, 5))):
+                    fail(f"Mixed topology: NumberOfElements {topo.get('NumberOfElements')}, Dimensions {item.get('Dimensions')}, for {len(types)} cells")
+            elif int(item.get("Dimensions").split()[0]) != int(topo.get("NumberOfElements")):
                 fail(f"Topology {item.text.strip()}: NumberOfElements {topo.get('NumberOfElements')} vs {item.get('Dimensions')}")
     print(f"check_fields: {nitems} DataItems match fields.h5")
 
@@ -222,6 +232,31 @@ def main():
         check_numbering(h5)
         check_results(h5, times)
 
+    # --elements: the kinds of cell (/shells/cell_type, XDMF codes: 5 quadrilateral, 4 triangle)
+    # agree with the cells' node counts and with the xdmf topology (Quadrilateral, or Mixed as soon as
+    # there is a triangle, whose flat list /shells/topology is the cells' type and nodes in order),
+    # and every shell node is a node of some cell.
+    if args.elements:
+        types, cells = h5["/shells/cell_type"][:, 0], h5["/shells/cells"][:]
+        has = {"quad": bool((types == 5).any()), "tri": bool((types == 4).any())}
+        want = {"quad": args.elements in ("quad", "mixed"), "tri": args.elements in ("tri", "mixed")}
+        if has != want:
+            fail(f"--elements {args.elements}: the file holds quadrilaterals {has['quad']}, triangles {has['tri']}")
+        if not np.isin(types, (4, 5)).all() or ((types == 4) != (cells[:, 3] < 0)).any() or (cells[:, :3] < 0).any():
+            fail("/shells/cell_type disagrees with the node counts of /shells/cells")
+        kinds = {t.get("TopologyType") for t in roots["fields.xdmf"].iter("Topology")}
+        if kinds != {"Mixed" if has["tri"] else "Quadrilateral"}:
+            fail(f"--elements {args.elements}: xdmf topologies {kinds}")
+        if has["tri"]:
+            flat = np.concatenate([[t] + list(c[: 3 if t == 4 else 4]) for t, c in zip(types, cells)])
+            if "/shells/topology" not in h5 or not np.array_equal(h5["/shells/topology"][:], flat):
+                fail("/shells/topology is not the cells' type codes and nodes in order")
+        used = np.zeros(len(h5["/shells/coordinates"]), bool)
+        used[cells[cells >= 0]] = True
+        if not used.all():
+            fail(f"{(~used).sum()} shell nodes belong to no element")
+        print(f"check_fields: {len(types)} elements ({int((types == 4).sum())} triangles) over {len(used)} nodes, every node used, topology {kinds}")
+
     # Fixed dof.
     dofnames = ["ux", "uy", "uz", "rx", "ry", "rz"]
     for spec in args.fixed:
@@ -259,6 +294,23 @@ def main():
             if n in ref and ref[n].dtype.kind == "f" and ref[n].size:
                 q = n.split("/", 2)[-1] if n.startswith("steps/") else n
                 qscale[q] = max(qscale.get(q, 0.0), np.abs(ref[n][:]).max())
+        # A quantity the load leaves zero (the shear of a strip in pure bending, the force of a joint
+        # that carries none) holds round-off only: its scale is then the load's in its units, from
+        # the quantities of other units and h, the mean element size (membrane and shear forces
+        # N/mm, moments N mm/mm, joint forces N, translations mm, rotations rad).
+        if "shells/cells" in ref:
+            xyz, cells = ref["shells/coordinates"][:], ref["shells/cells"][:]
+            first = xyz[cells[:, 0]]
+            h = np.mean([np.linalg.norm(xyz[cells[:, 2]] - first, axis=1).mean(), 1e-300])
+            get = lambda *names: max([qscale.get(k, 0.0) for k in names] + [0.0])
+            per_length = max(get("shells/N", "shells/Q", "shells/N_element", "shells/Q_element"), get("shells/M", "shells/M_element") / h)
+            translation = max(get("shells/displacement", "joints/displacement", "joints/jump"), get("shells/rotation") * h)
+            floor = {"N": per_length, "Q": per_length, "N_element": per_length, "Q_element": per_length,
+                     "M": per_length * h, "M_element": per_length * h, "force": per_length * h, "in_plane_force": per_length * h,
+                     "displacement": translation, "jump": translation, "rotation": translation / h}
+            for q in qscale:
+                if q.split("/")[-1] in floor:
+                    qscale[q] = max(qscale[q], floor[q.split("/")[-1]])
         worst = 0.0
         for n in names:
             if n not in ref:

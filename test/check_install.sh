@@ -9,7 +9,15 @@
 # tree's) and running it on 1 rank; and
 #   (c) the installed plugin and driver load the installed libboltnet (the prefix need not be the
 #       CMAKE_INSTALL_PREFIX the build was configured with), and a PETSc-only program
-#       (foreign_snes, when given) gets the boltnet line search from the installed plugin.
+#       (foreign_snes, when given) gets the boltnet line search from the installed plugin;
+#   (d) the installed package reproduces README.md: every file of share/scenes, the user scripts,
+#       the identify example curves and the docs are installed (docs/install.md), the driver finds
+#       an installed scene by its name, and the commands of the README's "Running scenes" block,
+#       read from README.md and moved to the installed paths as docs/install.md says (build/bin/ ->
+#       <prefix>/bin/, scripts/ -> <prefix>/share/boltnet/scripts/, share/scenes/ ->
+#       <prefix>/share/boltnet/scenes/, test/data/identify/ -> <prefix>/share/boltnet/identify/,
+#       /tmp/ -> a temporary directory), run from a directory outside the source tree and write
+#       their results and charts.
 #
 # Usage: check_install.sh BUILD_DIR TEST_API_C [CMAKE [MPIEXEC [LIBDIR [CC [FOREIGN_SNES]]]]]
 #   e.g. sh test/check_install.sh build test/test_api.c cmake mpiexec lib cc build/bin/foreign_snes
@@ -122,5 +130,70 @@ if [ -n "$foreign" ]; then
   echo "$out" | grep -q 'line search type boltnet' || fail "$foreign did not use the boltnet line search"
   echo "$out" | grep -q 'foreign_snes: PASS' || fail "$foreign did not print its PASS line"
 fi
+
+echo "== (d) the README against the installed package"
+root=$(cd "$(dirname "$src")/.." && pwd -P)
+data=$prefix/share/boltnet
+for f in "$root"/share/scenes/*; do
+  [ -f "$data/scenes/$(basename "$f")" ] || fail "the scene file share/scenes/$(basename "$f") is not installed in $data/scenes"
+done
+for f in plot_joints.py plot_fields.py make-plate-grid; do
+  [ -x "$data/scripts/$f" ] || fail "scripts/$f is not installed (executable) in $data/scripts"
+done
+[ -f "$data/scripts/mpienv" ] || fail "scripts/mpienv is not installed in $data/scripts"
+[ -f "$data/identify/cyclic.csv" ] || fail "test/data/identify/cyclic.csv is not installed in $data/identify"
+docdir=$prefix/share/doc/boltnet
+[ -f "$docdir/README.md" ] || fail "README.md is not installed in $docdir"
+for f in "$root"/docs/*.md "$root"/docs/images/*; do
+  [ -f "$docdir/docs/${f#"$root"/docs/}" ] || fail "docs/${f#"$root"/docs/} is not installed in $docdir/docs"
+done
+
+work=$tmp/work # outside the source tree: nothing there can be found by a relative path
+mkdir -p "$work"
+cd "$work"
+# By name: a scene that only the installed directory has proves where the driver looks.
+for f in "$data"/scenes/fig3c.*; do cp "$f" "$data/scenes/installed-only${f#"$data"/scenes/fig3c}"; done
+sed -i 's/name: fig3c$/name: installed-only/' "$data/scenes/installed-only.yaml"
+out=$("$prefix/bin/boltnet" -scene installed-only -load_steps 6 -output_fields false 2>&1) || {
+  echo "$out"
+  fail "$prefix/bin/boltnet -scene installed-only did not find the scene in $data/scenes"
+}
+grep -q '"status": "converged"' results/installed-only/summary.json || fail "the run of the installed scene by name did not converge"
+# The plot of fig3b's load shares in the README needs a fig3b run (the README's build made one).
+"$prefix/bin/boltnet" -scene fig3b -load_steps 6 >fig3b.log 2>&1 || {
+  cat fig3b.log
+  fail "$prefix/bin/boltnet -scene fig3b failed"
+}
+
+# The "Running scenes" block: the fenced sh block of README.md that runs the default scene.
+awk '/^```sh/ { inblock = 1; block = ""; next }
+     /^```/ && inblock { inblock = 0; if (block ~ /-scene share\/scenes\/fig3c.yaml/) { printf "%s", block; exit } ; next }
+     inblock { block = block $0 "\n" }' "$root/README.md" >readme-block.txt
+[ -s readme-block.txt ] || fail "README.md has no sh block that runs -scene share/scenes/fig3c.yaml"
+# One command a line (continuations joined, comments dropped), moved to the installed paths.
+sed -e ':a' -e '/\\$/N; s/\\\n */ /; ta' readme-block.txt | sed -e 's/[[:space:]]#.*$//' -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' |
+  sed -E -e "s#(^|[[:space:]])/tmp/#\1$tmp/#g" \
+    -e "s#(^|[[:space:]])build/bin/#\1$prefix/bin/#g" -e "s#(^|[[:space:]])scripts/#\1$data/scripts/#g" \
+    -e "s#(^|[[:space:]])share/scenes/#\1$data/scenes/#g" -e "s#(^|[[:space:]])test/data/identify/#\1$data/identify/#g" >readme-commands.sh
+n=$(wc -l <readme-commands.sh)
+[ "$n" -ge 5 ] || fail "only $n commands in README.md's Running scenes block"
+if grep -n "$root" readme-commands.sh; then fail "a README command names the source tree"; fi
+# mpienv is bash; the commands run in one shell, one after the other, as a reader pastes them.
+{
+  echo 'set -ex'
+  cat readme-commands.sh
+} >readme-run.sh
+bash readme-run.sh >readme.log 2>&1 || {
+  tail -40 readme.log
+  fail "a command of README.md failed against the installed package (readme-run.sh above)"
+}
+grep -q '"status": "converged"' results/fig3c/summary.json || fail "README: results/fig3c/summary.json does not say converged"
+grep -q '"status": "converged"' "$tmp/mu02/summary.json" || fail "README: the -output_dir /tmp/mu02 run did not converge"
+for png in jump.png law.png share.png; do
+  [ -s "$png" ] || fail "README: $png was not written"
+done
+grep -q '^fit:' readme.log || fail "README: boltnet-identify -curve printed no fit"
+echo "ran the $n commands of README.md's Running scenes block against $prefix, from $work"
+cd "$tmp"
 
 echo "check_install: PASS"

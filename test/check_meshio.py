@@ -4,8 +4,10 @@
   check_meshio.py DIR
 
 An independent reader of XDMF 3 + HDF5 (Debian's python3-meshio): through its time-series reader,
-- fields.xdmf: as many points and quadrilaterals as fields.h5 holds nodes and cells (counted with
-  h5py), the displacement of every step readable with one row per point;
+- fields.xdmf: as many points as fields.h5 holds nodes, and as many quadrilaterals and triangles
+  as it holds cells of each type (/shells/cell_type, counted with h5py; meshio reads the Mixed
+  topology of a mesh with triangles), the displacement of every step readable with one row per
+  point and the cell data with one row per cell;
 - joints.xdmf: one line per joint, one step per converged step of joints.csv, and at every step the
   joints' state and in-plane force equal joints.csv's (the table rank 0 writes from its own gather).
 """
@@ -27,17 +29,19 @@ def main():
     fails = []
     h5 = h5py.File(f"{d}/fields.h5", "r")
     nnodes, ncells = h5["/shells/coordinates"].shape[0], h5["/shells/cells"].shape[0]
+    types = h5["/shells/cell_type"][:, 0]
+    want = {"quad": int((types == 5).sum()), "triangle": int((types == 4).sum())}
     with meshio.xdmf.TimeSeriesReader(f"{d}/fields.xdmf") as r:
         points, cells = r.read_points_cells()
-        nquad = sum(len(c.data) for c in cells if c.type == "quad")
-        if points.shape != (nnodes, 3) or nquad != ncells:
-            fails.append(f"fields.xdmf: meshio reads {points.shape[0]} points, {nquad} quads; fields.h5 has {nnodes} nodes, {ncells} cells")
+        got = {k: sum(len(c.data) for c in cells if c.type == k) for k in want}
+        if points.shape != (nnodes, 3) or got != want:
+            fails.append(f"fields.xdmf: meshio reads {points.shape[0]} points, cells {got}; fields.h5 has {nnodes} nodes, cells {want}")
         for k in range(r.num_steps):
             t, pd, cd = r.read_data(k)
-            if pd["displacement"].shape != (nnodes, 3) or len(cd["von_mises_top"][0]) != ncells:
+            if pd["displacement"].shape != (nnodes, 3) or sum(len(b) for b in cd["von_mises_top"]) != ncells:
                 fails.append(f"fields.xdmf step {t}: displacement {pd['displacement'].shape}")
         nsteps = r.num_steps
-    print(f"check_meshio: fields.xdmf: {points.shape[0]} points, {nquad} quads, {nsteps} steps")
+    print(f"check_meshio: fields.xdmf: {points.shape[0]} points, {got['quad']} quads, {got['triangle']} triangles, {nsteps} steps")
 
     with open(f"{d}/joints.csv") as f:
         rows = list(csv.DictReader(f))

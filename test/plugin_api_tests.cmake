@@ -55,6 +55,44 @@ boltnet_checked_mpi_test(foreign_snes_full_newton_fails 1
   $<TARGET_FILE:foreign_snes> -snes_linesearch_type basic)
 
 # ---------------------------------------------------------------------------------------------------
+# foreign_switch: PETSc and MPI only, a problem with a switching (piecewise-linear) residual.
+# Requirement: a PETSc program that loads the plugin gives the boltnet line search its states without
+# linking boltnet, by composing on its SNES a state-change count or switch indicators
+# (docs/petsc-plugin.md), and the line search then converges where full Newton steps chatter.
+add_executable(foreign_switch foreign_switch.c)
+target_link_libraries(foreign_switch PRIVATE PkgConfig::PETSC MPI::MPI_C m)
+add_test(NAME foreign_switch_no_boltnet_dependency
+  COMMAND sh -c "deps=$(ldd \"$0\") || exit 1; if echo \"$deps\" | grep boltnet; then echo \"$0 depends on libboltnet\"; exit 1; fi; echo \"$0: no libboltnet among its $(echo \"$deps\" | wc -l) shared libraries\""
+          $<TARGET_FILE:foreign_switch>)
+
+# The problem needs a line search: full Newton steps chatter between states to the iteration limit
+# (blocks still change state in the last 10 iterations), and the program says so with a non-zero exit.
+boltnet_checked_mpi_test(foreign_switch_basic_chatters 1
+  "line search type basic, state none\nforeign_switch: SNES DIVERGED_MAX_IT after 100 Newton iterations[^\n]*\nforeign_switch: blocks that changed state over the last 10 iterations: [1-9][0-9]*\n.*\\[exit status [1-9][0-9]*\\]"
+  $<TARGET_FILE:foreign_switch> -snes_linesearch_type basic)
+
+# With the plugin and each interface (switch indicators, a count composed on the SNES, the line
+# search's setter found by name), at 1, 2 and 3 ranks: converged to u* (PASS), -snes_view
+# says which state function the line search uses and that it limited steps to a state change; no
+# option unused, no PETSc allocation leaked (the composed Vec and the line search's work vectors).
+set(_switch_view_switches "state function attached \\(switch indicators SNESLineSearchBoltnetSwitches_C composed on the SNES\\)")
+set(_switch_view_count "state function attached \\(SNESLineSearchBoltnetStateChange_C composed on the SNES\\)")
+set(_switch_view_setter "state function attached \\(SNESLineSearchBoltnetSetStateChangeFunction\\)")
+foreach(state switches count setter)
+  foreach(ranks 1 2 3)
+    boltnet_checked_mpi_test(foreign_switch_boltnet_${state} ${ranks}
+      "type: boltnet\n *boltnet: alpha [^\n]*${_switch_view_${state}}\n *boltnet: watchdog full steps [0-9]+, steps limited to a state change [1-9][0-9]*,[^\n]*\n.*line search type boltnet, state ${state}\n.*foreign_switch: PASS\n.*There are no unused options.*\\[exit status 0\\]"
+      $<TARGET_FILE:foreign_switch> -dll_append $<TARGET_FILE:boltnet_snes> -snes_linesearch_type boltnet -state ${state}
+      -snes_view -options_left -malloc_debug -malloc_dump)
+    set_tests_properties(foreign_switch_boltnet_${state}_np${ranks} PROPERTIES FAIL_REGULAR_EXPRESSION "${BOLTNET_TEST_FAIL_REGEX}")
+  endforeach()
+endforeach()
+# A switch function composed without the Vec of its layout: the line search says what is missing.
+boltnet_checked_mpi_test(foreign_switch_switches_without_layout 2
+  "A switch function is composed on the SNES as \"SNESLineSearchBoltnetSwitches_C\" but no Vec of the switches' layout as \"SNESLineSearchBoltnetSwitches\".*\\[exit status [1-9][0-9]*\\]"
+  $<TARGET_FILE:foreign_switch> -dll_append $<TARGET_FILE:boltnet_snes> -snes_linesearch_type boltnet -state switches_no_layout)
+
+# ---------------------------------------------------------------------------------------------------
 # test_api: boltnet.h only. Requirement: the public API gives the closed-form joint responses
 # (friction: stick, slide, bearing, elastic unloading over 2G, reverse slip; spring; contact law)
 # at 1, 2 and 3 ranks.

@@ -93,7 +93,7 @@ PetscErrorCode CouponCompliance(const CouponSpec &s, CouponResult *r)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode FootprintElementSize(MPI_Comm comm, const QuadMesh &m, const double p[3], const double axis[3], const double t1[3], double radius, double *hx, double *hy)
+PetscErrorCode FootprintElementSize(MPI_Comm comm, const ShellMesh &m, const double p[3], const double axis[3], const double t1[3], double radius, double *hx, double *hy)
 {
   PetscFunctionBeginUser;
   const std::array<double, 3> P = {p[0], p[1], p[2]}, N = {axis[0], axis[1], axis[2]};
@@ -110,12 +110,12 @@ PetscErrorCode FootprintElementSize(MPI_Comm comm, const QuadMesh &m, const doub
   const std::set<int> in(fp.begin(), fp.end());
   double   sx = 0, sy = 0;
   PetscInt count = 0;
-  for (const auto &q : m.quads) {
+  for (const auto &q : m.elems) {
     bool touches = false;
-    for (int k = 0; k < 4; ++k) touches = touches || in.count(q[k]);
+    for (int k = 0; k < ElementNodes(q); ++k) touches = touches || in.count(q[k]);
     if (!touches) continue;
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < ElementNodes(q); ++k) {
       const auto  &x  = m.x[q[k]];
       const double pa = x[0] * a[0] + x[1] * a[1] + x[2] * a[2], pb = x[0] * b[0] + x[1] * b[1] + x[2] * b[2];
       lo[0] = std::min(lo[0], pa), hi[0] = std::max(hi[0], pa);

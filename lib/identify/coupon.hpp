@@ -47,7 +47,7 @@ PetscErrorCode CouponCompliance(const CouponSpec &spec, CouponResult *res);
 // Mean extent, along t1 and along axis x t1, of the elements holding a node of the coupling
 // footprint of a fastener at p (the element containing p when there is none). Errors (on comm) when
 // p is outside the mesh.
-PetscErrorCode FootprintElementSize(MPI_Comm comm, const QuadMesh &m, const double p[3], const double axis[3], const double t1[3], double radius, double *hx, double *hy);
+PetscErrorCode FootprintElementSize(MPI_Comm comm, const ShellMesh &m, const double p[3], const double axis[3], const double t1[3], double radius, double *hx, double *hy);
 
 // k = 1/(1/k_formula - C_c) for the bearing stiffness kc and the stick stiffness kt of q (both
 // measure the whole joint). An error naming `what` when the shells alone are already at least as

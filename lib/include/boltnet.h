@@ -66,6 +66,13 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly, PetscInt patch
    default), by penalty links (penalty, -coupling_penalty), or to the nearest node (node);
    docs/coupling.md. */
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t);
+/* A shell patch of triangles, quadrilaterals or both (a mixed mesh): nelems elements of four entries
+   each, elems[4*e+k], the nodes counter-clockwise about the intended normal; a triangle gives three
+   nodes and -1 as its fourth entry. Otherwise as BoltnetAssemblyAddShellPatch, which is this
+   function with quadrilaterals only. A node number out of range or named twice in an element is an
+   error naming the patch and the element. On a curved mesh the elements around a node share the
+   mean of their normals as director (-shell_directors, docs/shell.md). */
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatchElements(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[]);
 /* A boundary condition on a node set of a shell patch (NULL or "": all its nodes); a force value is
    the total on the set, shared equally by its nodes. */
@@ -112,6 +119,29 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly, Pet
    their state at the reference point (summed over ranks). */
 typedef PetscErrorCode (*BoltnetStateChangeFn)(SNES, Vec ref, Vec x, PetscInt *nchanged, void *ctx);
 PETSC_EXTERN PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction(SNESLineSearch, BoltnetStateChangeFn, void *);
+
+/* A PETSc program that loads the line search as a plugin (-dll_append libboltnet_snes.so) and does not
+   link boltnet gives it its states by composing them on its SNES, at any time before SNESSolve()
+   (docs/petsc-plugin.md has the complete recipe and an example, test/foreign_switch.c):
+
+   - a state-change count, the BoltnetStateChangeFn above (ctx is the SNES's application context,
+     SNESSetApplicationContext()):
+       PetscObjectComposeFunction((PetscObject)snes, "SNESLineSearchBoltnetStateChange_C", fn);
+   - or switch indicators: fn(snes, x, s, ctx) fills s with the values s_i(x) whose signs define the
+     states (s_i > 0 against s_i <= 0: a gap, a yield function, ...; ctx as above), and a Vec with
+     the layout of s (the line search duplicates it):
+       PetscObjectComposeFunction((PetscObject)snes, "SNESLineSearchBoltnetSwitches_C", fn);
+       PetscObjectCompose((PetscObject)snes, "SNESLineSearchBoltnetSwitches", (PetscObject)s);
+     A state change is an indicator that changes sign; the count is summed over ranks.
+
+   SNESLineSearchBoltnetSetStateChangeFunction() takes precedence over both (without boltnet.h: the
+   method "SNESLineSearchBoltnetSetStateChangeFunction_C" that PetscObjectQueryFunction finds on the
+   line search once it has its type); the count takes precedence over the switches. Composing NULL
+   removes them. -snes_view says which one the line search uses. */
+#define SNESLINESEARCHBOLTNET_STATECHANGE  "SNESLineSearchBoltnetStateChange_C"
+#define SNESLINESEARCHBOLTNET_SWITCHES_FN  "SNESLineSearchBoltnetSwitches_C"
+#define SNESLINESEARCHBOLTNET_SWITCHES_VEC "SNESLineSearchBoltnetSwitches"
+typedef PetscErrorCode (*BoltnetSwitchFn)(SNES, Vec x, Vec s, void *ctx);
 
 #if defined(__cplusplus)
 }

@@ -1,7 +1,8 @@
 // Field output (docs/output.md): fields.h5 written in parallel through PETSc's HDF5 viewer, each
 // rank its own rows of every dataset (network/fields.hpp puts them in the file's numbering), and
 // fields.xdmf (shells) and joints.xdmf (joint lines), XDMF 3, written by rank 0. HDF5 itself is
-// called once, to silence its error printing.
+// called to silence its error printing and to write the one-dimensional topology of a mesh with
+// triangles (WriteMixedTopology).
 #include "io/io.hpp"
 #include "io/xdmf.hpp"
 #include "network/gather.hpp"
@@ -39,14 +40,16 @@ struct Column {
 };
 
 // The datasets `cols` of space s from `rows` (per owned item, the columns side by side), in one
-// scatter to natural order (or from `natural`, already scattered), each then written by VecView or
-// ISView: every rank its own rows.
-PetscErrorCode WritePacked(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, const std::vector<Column> &cols, const std::vector<double> &rows, Vec natural = nullptr)
+// scatter to natural order (or from *given, already scattered), each then written by VecView or
+// ISView: every rank its own rows. *given (if not null) is set to the natural Vec, borrowed from s.
+PetscErrorCode WritePacked(MPI_Comm comm, PetscViewer viewer, FieldSpace &s, const std::vector<Column> &cols, const std::vector<double> &rows, Vec *given = nullptr)
 {
   PetscInt K = 0, first = 0;
+  Vec      natural = given ? *given : nullptr;
   PetscFunctionBeginUser;
   for (const Column &c : cols) K += c.bs;
   if (!natural) PetscCall(FieldSpaceNatural(comm, s, K, rows, &natural));
+  if (given) *given = natural;
   for (const Column &c : cols) {
     Vec v;
     PetscCall(FieldSpaceColumns(s, natural, K, first, c.bs, &v));
@@ -84,6 +87,44 @@ std::string StepGroup(PetscInt step)
   return s;
 }
 
+// A mesh with triangles: the XDMF "Mixed" topology /shells/topology, per cell (in natural order) its
+// type code and its nodes, one flat list of 5 E - (number of triangles) integers. Each rank writes
+// the cells of its natural rows, read from `natural` (K columns, cells in 0..3, the type code in 4),
+// at the offset of the ranks before it. Written through HDF5 itself: XDMF readers (meshio among
+// them) want a one-dimensional dataset, and ISView always writes two dimensions.
+PetscErrorCode WriteMixedTopology(MPI_Comm comm, PetscViewer viewer, const FieldSpace &s, Vec natural, PetscInt K)
+{
+  const PetscScalar    *p;
+  std::vector<PetscInt> mine;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(natural, &p));
+  for (PetscInt i = 0; i < s.nlocal; ++i) {
+    const PetscInt type = (PetscInt)p[K * i + 4];
+    mine.push_back(type);
+    for (int k = 0; k < (type == 4 ? 3 : 4); ++k) mine.push_back((PetscInt)p[K * i + k]);
+  }
+  PetscCall(VecRestoreArrayRead(natural, &p));
+  unsigned long long n = mine.size(), start = 0, total = 0;
+  PetscMPIInt        rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Exscan(&n, &start, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm));
+  if (rank == 0) start = 0; // MPI_Exscan leaves rank 0's result undefined
+  PetscCallMPI(MPI_Allreduce(&n, &total, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm));
+  hid_t   file, type;
+  hsize_t hn = n, hstart = start, htotal = total;
+  PetscCall(PetscViewerHDF5GetFileId(viewer, &file));
+  PetscCall(PetscDataTypeToHDF5DataType(PETSC_INT, &type));
+  const char  *path   = "/shells/topology";
+  const hid_t  fspace = H5Screate_simple(1, &htotal, nullptr);
+  const hid_t  mspace = H5Screate_simple(1, &hn, nullptr);
+  const hid_t  dset   = fspace < 0 ? -1 : H5Dcreate2(file, path, type, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t sel    = fspace < 0 ? -1 : hn > 0 ? H5Sselect_hyperslab(fspace, H5S_SELECT_SET, &hstart, nullptr, &hn, nullptr) : H5Sselect_none(fspace);
+  const herr_t wrote  = dset < 0 || mspace < 0 || sel < 0 ? -1 : H5Dwrite(dset, type, mspace, fspace, H5P_DEFAULT, mine.data());
+  const bool   closed = (dset < 0 || H5Dclose(dset) >= 0) & (mspace < 0 || H5Sclose(mspace) >= 0) & (fspace < 0 || H5Sclose(fspace) >= 0);
+  PetscCheck(wrote >= 0 && closed, PETSC_COMM_SELF, PETSC_ERR_LIB, "HDF5 could not write %s", path);
+  PetscFunctionReturn(0);
+}
+
 // Geometry, topology and the numbering: written once, with the first step.
 PetscErrorCode WriteMesh(BoltnetAssembly a, FieldsFile *ff, const StepFields &f)
 {
@@ -102,19 +143,21 @@ PetscErrorCode WriteMesh(BoltnetAssembly a, FieldsFile *ff, const StepFields &f)
     for (const FieldElement &e : m.elements) {
       for (int k = 0; k < 4; ++k) elems.push_back(k < e.nn ? (double)e.node[k] : -1.0);
       elems.insert(elems.end(), {(double)e.type, (double)e.part, (double)e.elem});
-      const shell::ElementFrame fr = shell::MakeElementFrame(e.X);
-      shell::SectionResults     s{};
-      s.e1 = fr.e1, s.e2 = fr.e2;
+      const auto            fr = ElementAxesOf(e.geom); // e1, e2, e3
+      shell::SectionResults s{};
+      s.e1 = fr[0], s.e2 = fr[1];
       const double phi = shell::MaterialAngle(s, FieldElementMaterial(a, e));
-      elems.insert(elems.end(), fr.e3.begin(), fr.e3.end());
-      elems.insert(elems.end(), fr.e1.begin(), fr.e1.end());
-      for (int c = 0; c < 3; ++c) elems.push_back(std::cos(phi) * fr.e1[c] + std::sin(phi) * fr.e2[c]);
+      elems.insert(elems.end(), fr[2].begin(), fr[2].end());
+      elems.insert(elems.end(), fr[0].begin(), fr[0].end());
+      for (int c = 0; c < 3; ++c) elems.push_back(std::cos(phi) * fr[0][c] + std::sin(phi) * fr[1][c]);
     }
     PetscCall(PetscViewerHDF5PushGroup(v, "/shells"));
     PetscCall(WritePacked(comm, v, m.nodes, {{"coordinates", 3, Column::Real}, {"node_part", 1, Column::Int}, {"node", 1, Column::Int}}, nodes));
+    Vec natural = nullptr; // the elements' columns side by side, in natural order
     PetscCall(WritePacked(comm, v, m.elems,
-                          {{"cells", 4, Column::Int}, {"cell_type", 1, Column::Int}, {"part", 1, Column::Int}, {"element", 1, Column::Int}, {"normal", 3, Column::Real}, {"element_axis", 3, Column::Real}, {"material_axis", 3, Column::Real}}, elems));
+                          {{"cells", 4, Column::Int}, {"cell_type", 1, Column::Int}, {"part", 1, Column::Int}, {"element", 1, Column::Int}, {"normal", 3, Column::Real}, {"element_axis", 3, Column::Real}, {"material_axis", 3, Column::Real}}, elems, &natural));
     PetscCall(PetscViewerHDF5PopGroup(v));
+    if (m.ntriangles > 0) PetscCall(WriteMixedTopology(comm, v, m.elems, natural, 16));
   }
   std::vector<double> joints;
   for (const JointLine &l : f.lines) {
@@ -226,9 +269,12 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
   const FieldMap &m = ff.map;
   const PetscInt  N = m.nodes.nglobal, E = m.elems.nglobal, J = m.joints.nglobal;
   if (N > 0) {
-    // All quadrilaterals today; a mesh with triangles writes the XDMF "Mixed" topology instead (a
-    // flat list of type code and nodes per cell, from /shells/cell_type and /shells/cells).
-    const std::string mesh = "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" + std::to_string(E) + "\">\n      " + Item(kH5, "/shells/cells", E, 4, true) + "\n    </Topology>\n" +
+    // Quadrilaterals only: /shells/cells. With triangles, the XDMF "Mixed" topology: a flat list of
+    // type code and nodes per cell (/shells/topology, WriteMixedTopology).
+    const PetscInt    L        = 5 * E - m.ntriangles;
+    const std::string topology = m.ntriangles == 0 ? "    <Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" + std::to_string(E) + "\">\n      " + Item(kH5, "/shells/cells", E, 4, true) + "\n    </Topology>\n"
+                                                   : "    <Topology TopologyType=\"Mixed\" NumberOfElements=\"" + std::to_string(E) + "\">\n      <DataItem Dimensions=\"" + std::to_string(L) + "\" DataType=\"Int\" Precision=\"" + std::to_string(sizeof(PetscInt)) + "\" Format=\"HDF\">" + kH5 + ":/shells/topology</DataItem>\n    </Topology>\n";
+    const std::string mesh = topology +
                              "    <Geometry GeometryType=\"XYZ\">\n      " + Item(kH5, "/shells/coordinates", N, 3, false) + "\n    </Geometry>\n" +
                              Attribute("part", "Scalar", "Cell", Item(kH5, "/shells/part", E, 1, true)) + Attribute("element", "Scalar", "Cell", Item(kH5, "/shells/element", E, 1, true)) +
                              Attribute("node_part", "Scalar", "Node", Item(kH5, "/shells/node_part", N, 1, true)) + Attribute("node", "Scalar", "Node", Item(kH5, "/shells/node", N, 1, true)) +
@@ -289,6 +335,8 @@ PetscErrorCode WriteBypass(FieldsFile *ff, const StepInfo &info, std::vector<Byp
 
 } // namespace
 
+std::string FieldsStepGroup(PetscInt step) { return StepGroup(step); }
+
 PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o)
 {
   PetscFunctionBeginUser;
@@ -324,7 +372,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
   const std::string g = StepGroup(info.step);
   if (ff->map.nodes.nglobal > 0) {
     PetscCall(PetscViewerHDF5PushGroup(v, (g + "/shells").c_str()));
-    PetscCall(WritePacked(a->comm, v, ff->map.nodes, {{"displacement", 3, Column::Real}, {"rotation", 3, Column::Real}}, f.dof, f.dof_natural));
+    PetscCall(WritePacked(a->comm, v, ff->map.nodes, {{"displacement", 3, Column::Real}, {"rotation", 3, Column::Real}}, f.dof, &f.dof_natural));
     if (ff->opt.results) PetscCall(WriteResults(a, ff, f));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }

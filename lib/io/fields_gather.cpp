@@ -128,8 +128,8 @@ PetscErrorCode FieldsWriteStepGather(FieldsFile *ff, const StepInfo &info, const
     for (const PartField &p : parts) {
       const PetscInt base = (PetscInt)(x.size() / 3);
       for (const auto &c : p.x) x.insert(x.end(), c.begin(), c.end());
-      for (const auto &q : p.quads) {
-        for (int k = 0; k < 4; ++k) quads.push_back(base + q[k]);
+      for (const auto &q : p.elems) {
+        for (int k = 0; k < 4; ++k) quads.push_back(base + q[k]); // quadrilaterals only (OutputOpen)
         part.push_back(p.id);
       }
     }

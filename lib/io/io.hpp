@@ -67,6 +67,12 @@ PetscErrorCode FieldsClose(FieldsFile *ff);
 // -output_fields_gather (inside the
 // caller's PetscOptionsBegin/End, so that -help lists them).
 PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o);
+// The group of fields.h5 that holds a step's fields ("/steps/000012"): a restart drops those after
+// its checkpoint (io/resume.cpp).
+std::string FieldsStepGroup(PetscInt step);
+
+// The header line of joints.csv (docs/output.md).
+constexpr const char *kJointsHeader = "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2";
 
 // Results, written by rank 0 under dir.
 struct Output {

@@ -116,6 +116,14 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   out->ff.dir   = dir;
   out->ff.scene = scene;
   out->ff.opt   = fields;
+  if (out->fields && fields.gather) {
+    PetscInt tri = -1, any; // the id of a part with triangles
+    for (const auto &[index, sp] : a->layout.shells)
+      for (const MeshElement &e : sp.mesh.elems)
+        if (ElementNodes(e) == 3) tri = sp.id;
+    PetscCall(MPIU_Allreduce(&tri, &any, 1, MPIU_INT, MPI_MAX, comm));
+    PetscCheck(any < 0, comm, PETSC_ERR_SUP, "-output_fields_gather writes quadrilaterals only (the former writer, kept to measure against): part %" PetscInt_FMT " has triangles", any);
+  }
   if (rank == 0) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -129,7 +137,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
     ok       = out->csv ? 1 : 0;
     if (ok) {
       errno = 0;
-      if (std::fprintf(out->csv, "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2\n") < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
+      if (std::fprintf(out->csv, "%s\n", kJointsHeader) < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
     }
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
@@ -219,7 +227,8 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
     j << "],\n  \"cutbacks_per_step\": [";
     for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].cutbacks;
     j << "],\n  \"stuck_linear\": " << (a->opt.stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << JsonNumber(a->joints.joint_steps ? (double)a->joints.frozen_joint_steps / (double)a->joints.joint_steps : 0.0)
-      << ",\n  \"released\": " << a->joints.released << ",\n  \"jacobians_assembled\": " << a->joints.jac_assembled << ",\n  \"jacobians_reused\": " << a->joints.jac_reused;
+      << ",\n  \"released\": " << a->joints.released << ",\n  \"jacobians_assembled\": " << a->joints.jac_assembled << ",\n  \"jacobians_reused\": " << a->joints.jac_reused
+      << ",\n  \"interface_solve\": " << JsonString(a->lagged ? "lagged" : "direct") << ",\n  \"linear_solves\": " << a->linear_solves << ",\n  \"krylov_iterations\": " << a->krylov_its << ",\n  \"lagged_factorisations\": " << a->factorisations;
     j << ",\n  \"most_loaded_joint\": ";
     if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << JsonNumber(out->most_load) << ", \"in_plane_force\": " << JsonNumber(out->most_force) << "}";
     else j << "null";

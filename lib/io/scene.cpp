@@ -360,7 +360,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscCall(PetscStrncpy(name, scene->name.c_str(), sizeof(name)));
   PetscOptionsBegin(comm, nullptr, "boltnet scene", "boltnet");
   PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
-  PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,mesh,part,material] (kind rigid, plate or gmsh)", "", fp, fp, sizeof(fp), nullptr));
+  PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,elements,mesh,part,material] (kind rigid, plate or gmsh; elements quad, tri or mixed)", "", fp, fp, sizeof(fp), nullptr));
   PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z] (n bolt axis, t1 first in-plane direction, x position)", "", fj, fj, sizeof(fj), nullptr));
   PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set] (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N; set: a shell patch's node set)", "", fb, fb, sizeof(fb), nullptr));
   PetscOptionsEnd();
@@ -396,7 +396,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
     // Shell patches: a generated plate (corner x, y, z; lx, ly; nx by ny elements) or a Gmsh part.
     std::string          matname;
     shell::ShellMaterial mat;
-    QuadMesh             mesh;
+    ShellMesh            mesh;
     PetscCall(Cell(comm, patches, r, "material", &matname));
     PetscCheck(!matname.empty(), comm, PETSC_ERR_USER_INPUT, "%s line %d: a %s patch needs a material", patches.path.c_str(), patches.lines[r], kind.c_str());
     PetscCall(MaterialFromOptions(comm, matname, &mat));
@@ -412,7 +412,14 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       PetscCheck((std::int64_t)nx * ny <= limits::kMaxPlateElements, comm, PETSC_ERR_USER_INPUT, "%s line %d: a plate of %" PetscInt_FMT " x %" PetscInt_FMT " elements is larger than the limit of %lld elements (docs/scenes.md, \"Limits\")", patches.path.c_str(), patches.lines[r], nx, ny, (long long)limits::kMaxPlateElements);
       scene_nodes += (std::int64_t)(nx + 1) * (ny + 1);
       PetscCheck(scene_nodes <= limits::kMaxSceneNodes, comm, PETSC_ERR_USER_INPUT, "%s line %d: the shell patches so far have %lld nodes, more than the limit of %lld (docs/scenes.md, \"Limits\")", patches.path.c_str(), patches.lines[r], (long long)scene_nodes, (long long)limits::kMaxSceneNodes);
-      PetscCall(Input(comm, [&] { mesh = RectanglePlate(x[0], x[1], lx, ly, (int)nx, (int)ny, x[2]); }));
+      // Optional column elements: quad (default), tri (each cell split in two) or mixed.
+      std::string   elements;
+      PlateElements pe = PlateElements::Quads;
+      if (HasColumn(patches, "elements")) PetscCall(Cell(comm, patches, r, "elements", &elements));
+      PetscCheck(elements.empty() || elements == "quad" || elements == "tri" || elements == "mixed", comm, PETSC_ERR_USER_INPUT, "%s line %d, column 'elements': '%s' is not quad, tri or mixed", patches.path.c_str(), patches.lines[r], elements.c_str());
+      if (elements == "tri") pe = PlateElements::Triangles;
+      if (elements == "mixed") pe = PlateElements::Mixed;
+      PetscCall(Input(comm, [&] { mesh = RectanglePlate(x[0], x[1], lx, ly, (int)nx, (int)ny, x[2], pe); }));
     } else {
       std::string file, part;
       PetscCall(Cell(comm, patches, r, "mesh", &file));
@@ -420,8 +427,8 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       // A relative mesh path is relative to the patches table that names it.
       const std::string tdir = std::filesystem::path(patches.path).parent_path().string();
       if (!file.empty() && file[0] != '/' && !tdir.empty()) file = tdir + "/" + file;
-      std::map<std::string, QuadMesh> parts;
-      std::string                     why;
+      std::map<std::string, ShellMesh> parts;
+      std::string                      why;
       try {
         parts = ReadGmsh(file);
       } catch (const std::exception &e) {

@@ -19,7 +19,7 @@ int Root(std::vector<int> &parent, int i)
 
 } // namespace
 
-PartCut CutPart(const QuadMesh &m, const std::vector<std::vector<int>> &clusters, long max_nodes)
+PartCut CutPart(const ShellMesh &m, const std::vector<std::vector<int>> &clusters, long max_nodes)
 {
   PartCut    cut;
   const long n = (long)m.x.size();
@@ -39,9 +39,9 @@ PartCut CutPart(const QuadMesh &m, const std::vector<std::vector<int>> &clusters
   if (nv < 2 || want < 2) return cut;
   // Adjacency of graph vertices through elements, weighted by the number of node pairs.
   std::vector<std::map<idx_t, idx_t>> adj(nv);
-  for (const auto &q : m.quads)
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) {
+  for (const auto &q : m.elems)
+    for (int a = 0; a < ElementNodes(q); ++a)
+      for (int b = 0; b < ElementNodes(q); ++b) {
         const idx_t u = vertex[q[a]], v = vertex[q[b]];
         if (u != v) adj[u][v]++;
       }

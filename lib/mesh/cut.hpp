@@ -26,6 +26,6 @@ struct PartCut {
 // the elements touching it) are contracted to one graph vertex first, so each cluster stays in one
 // patch. max_nodes <= 0, or a part within it, means no cut. Deterministic (fixed METIS seed).
 // Throws std::runtime_error if METIS fails.
-PartCut CutPart(const QuadMesh &m, const std::vector<std::vector<int>> &clusters, long max_nodes);
+PartCut CutPart(const ShellMesh &m, const std::vector<std::vector<int>> &clusters, long max_nodes);
 
 } // namespace boltnet

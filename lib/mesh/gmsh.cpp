@@ -52,9 +52,21 @@ private:
   int           lineno_ = 0;
 };
 
+// Gmsh's element types (its reference manual, "MSH file format"): the node count of the ones read
+// here, -1 for the others.
+int TypeNodes(int type) { return type == 1 ? 2 : type == 2 ? 3 : type == 3 ? 4 : type == 15 ? 1 : -1; }
+
+// The name of a type boltnet does not read, for the message that refuses it.
+std::string TypeName(int type)
+{
+  static const char *const names[] = {nullptr, nullptr, nullptr, nullptr, "4-node tetrahedra", "8-node hexahedra", "6-node prisms", "5-node pyramids", "3-node lines", "6-node triangles", "9-node quadrangles", "10-node tetrahedra", "27-node hexahedra", "18-node prisms", "14-node pyramids", nullptr, "8-node quadrangles", "20-node hexahedra", "15-node prisms", "13-node pyramids"};
+  const std::string n = "element type " + std::to_string(type);
+  return type >= 0 && type < (int)(sizeof names / sizeof names[0]) && names[type] ? n + " (" + names[type] + ")" : n;
+}
+
 } // namespace
 
-std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
+std::map<std::string, ShellMesh> ReadGmsh(const std::string &path)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("Cannot read the mesh file '" + path + "'");
@@ -65,13 +77,13 @@ std::map<std::string, QuadMesh> ReadGmsh(const std::string &path)
   return ParseGmsh(path, ss.str());
 }
 
-std::map<std::string, QuadMesh> ParseGmsh(const std::string &path, const std::string &text)
+std::map<std::string, ShellMesh> ParseGmsh(const std::string &path, const std::string &text)
 {
   Reader                                    r(path, text);
   std::map<std::pair<int, int>, std::string> names;          // (dim, physical tag) -> name
   std::map<std::pair<int, int>, std::vector<int>> physOf;   // (dim, entity tag) -> physical tags
   std::map<long, std::array<double, 3>>     nodes;           // node tag -> coordinates
-  std::map<std::string, std::vector<std::array<long, 4>>> partQuads;
+  std::map<std::string, std::vector<std::array<long, 4>>> partElems; // triangles end with -1
   std::map<std::string, std::set<long>>     groupNodes;      // every physical group -> node tags
   bool                                      format = false;
 
@@ -149,36 +161,42 @@ std::map<std::string, QuadMesh> ParseGmsh(const std::string &path, const std::st
         const int          dim = r.get<int>(hs, "an entity dimension"), tag = r.get<int>(hs, "an entity tag");
         const int          type = r.get<int>(hs, "an element type");
         const long         n    = r.count(hs, "the number of elements in the block");
-        const int          nn   = type == 1 ? 2 : type == 2 ? 3 : type == 3 ? 4 : type == 15 ? 1 : -1;
-        if (nn < 0) r.fail("element type " + std::to_string(type) + " is not supported (4-node quadrangles, lines, points)");
+        const int          nn   = TypeNodes(type);
+        if (nn < 0) r.fail(TypeName(type) + " is not supported: boltnet reads 3-node triangles (type 2) and 4-node quadrangles (type 3) in the parts, lines and points in the node sets (save a first-order mesh)");
         std::vector<std::string> groups;
         for (int ph : physOf[{dim, tag}]) groups.push_back(names.count({dim, ph}) ? names[{dim, ph}] : std::to_string(ph));
         for (long i = 0; i < n; ++i) {
           std::istringstream ls(r.line());
           r.get<long>(ls, "an element tag");
-          std::array<long, 4> q{};
-          for (int k = 0; k < nn; ++k) q[k] = r.get<long>(ls, "element nodes");
-          if (type == 3 && (q[0] == q[1] || q[0] == q[2] || q[0] == q[3] || q[1] == q[2] || q[1] == q[3] || q[2] == q[3])) r.fail("a quadrangle names the same node twice");
+          std::array<long, 4> q = {-1, -1, -1, -1};
+          for (int k = 0; k < nn; ++k) {
+            q[k] = r.get<long>(ls, "element nodes");
+            if (q[k] <= 0) r.fail("element node tag " + std::to_string(q[k]) + " is not positive"); // -1 marks a triangle's fourth
+          }
+          if (type == 2 || type == 3)
+            for (int a = 0; a < nn; ++a)
+              for (int b = a + 1; b < nn; ++b)
+                if (q[a] == q[b]) r.fail(std::string(type == 2 ? "a triangle" : "a quadrangle") + " names the same node twice");
           for (const std::string &g : groups) {
             for (int k = 0; k < nn; ++k) groupNodes[g].insert(q[k]);
             if (dim != 2) continue;
-            if (type != 3) r.fail("part '" + g + "' has triangles: boltnet's shell is a 4-node quadrangle (mesh with Recombine)");
-            partQuads[g].push_back(q);
+            if (type != 2 && type != 3) r.fail("part '" + g + "' (a physical surface) holds " + TypeName(type) + ": a shell part is made of 3-node triangles and 4-node quadrangles");
+            partElems[g].push_back(q);
           }
         }
       }
     }
   }
   if (!format) throw std::runtime_error("Mesh file '" + path + "' is not a Gmsh mesh (no $MeshFormat section)");
-  if (partQuads.empty()) throw std::runtime_error("Mesh file '" + path + "' has no physical surface of quadrangles: name each part with a physical surface group");
+  if (partElems.empty()) throw std::runtime_error("Mesh file '" + path + "' has no physical surface of triangles or quadrangles: name each part with a physical surface group");
 
-  std::map<std::string, QuadMesh> parts;
-  for (auto &[name, quads] : partQuads) {
-    QuadMesh            &m = parts[name];
+  std::map<std::string, ShellMesh> parts;
+  for (auto &[name, elems] : partElems) {
+    ShellMesh          &m = parts[name];
     std::map<long, int> local;
-    for (auto &q : quads) {
-      std::array<int, 4> e;
-      for (int k = 0; k < 4; ++k) {
+    for (auto &q : elems) {
+      MeshElement e = {-1, -1, -1, -1};
+      for (int k = 0; k < (q[3] < 0 ? 3 : 4); ++k) {
         auto it = local.find(q[k]);
         if (it == local.end()) {
           auto xn = nodes.find(q[k]);
@@ -188,7 +206,7 @@ std::map<std::string, QuadMesh> ParseGmsh(const std::string &path, const std::st
         }
         e[k] = it->second;
       }
-      m.quads.push_back(e);
+      m.elems.push_back(e);
     }
     for (auto &[g, tags] : groupNodes) {
       if (g == name) continue;

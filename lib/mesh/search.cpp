@@ -51,11 +51,11 @@ std::vector<int> NodeGrid::Ball(const std::array<double, 3> &p, double r) const
   return out;
 }
 
-std::vector<std::vector<int>> NodeElements(const QuadMesh &m)
+std::vector<std::vector<int>> NodeElements(const ShellMesh &m)
 {
   std::vector<std::vector<int>> t(m.x.size());
-  for (size_t e = 0; e < m.quads.size(); ++e)
-    for (int v : m.quads[e]) t[v].push_back((int)e);
+  for (size_t e = 0; e < m.elems.size(); ++e)
+    for (int k = 0; k < ElementNodes(m.elems[e]); ++k) t[m.elems[e][k]].push_back((int)e);
   return t;
 }
 
@@ -63,11 +63,12 @@ std::vector<std::vector<int>> NodeElements(const QuadMesh &m)
 
 namespace boltnet {
 namespace {
-double ElementDiameter(const QuadMesh &m, const std::array<int, 4> &q)
+double ElementDiameter(const ShellMesh &m, const MeshElement &q)
 {
-  double d = 0;
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) {
+  double    d  = 0;
+  const int nn = ElementNodes(q);
+  for (int a = 0; a < nn; ++a)
+    for (int b = a + 1; b < nn; ++b) {
       double s = 0;
       for (int k = 0; k < 3; ++k) s += (m.x[q[a]][k] - m.x[q[b]][k]) * (m.x[q[a]][k] - m.x[q[b]][k]);
       d = std::max(d, std::sqrt(s));
@@ -75,11 +76,11 @@ double ElementDiameter(const QuadMesh &m, const std::array<int, 4> &q)
   return d;
 }
 
-double MeanEdge(const QuadMesh &m)
+double MeanEdge(const ShellMesh &m)
 {
   double s = 0;
-  for (const auto &q : m.quads) s += ElementDiameter(m, q);
-  return m.quads.empty() ? 1.0 : std::max(s / (double)m.quads.size() / std::sqrt(2.0), 1e-9);
+  for (const auto &q : m.elems) s += ElementDiameter(m, q);
+  return m.elems.empty() ? 1.0 : std::max(s / (double)m.elems.size() / std::sqrt(2.0), 1e-9);
 }
 
 void Unit(const std::array<double, 3> &axis, double n[3])
@@ -90,9 +91,9 @@ void Unit(const std::array<double, 3> &axis, double n[3])
 }
 } // namespace
 
-FootprintFinder::FootprintFinder(const QuadMesh &m, double reach) : m_(m), reach_(reach), grid_(m.x, MeanEdge(m)), touching_(NodeElements(m))
+FootprintFinder::FootprintFinder(const ShellMesh &m, double reach) : m_(m), reach_(reach), grid_(m.x, MeanEdge(m)), touching_(NodeElements(m))
 {
-  for (const auto &q : m.quads) hmax_ = std::max(hmax_, ElementDiameter(m, q));
+  for (const auto &q : m.elems) hmax_ = std::max(hmax_, ElementDiameter(m, q));
 }
 
 std::vector<int> FootprintFinder::Near(const std::array<double, 3> &p, const double n[3], double r, double sheet) const
@@ -135,19 +136,19 @@ int FootprintFinder::ContainingElement(const std::array<double, 3> &p, const std
     for (int e : touching_[i]) elems.push_back(e);
   std::sort(elems.begin(), elems.end());
   elems.erase(std::unique(elems.begin(), elems.end()), elems.end());
-  QuadMesh sub;
+  ShellMesh sub;
   std::map<int, int> local;
   for (int e : elems) {
-    std::array<int, 4> q;
-    for (int k = 0; k < 4; ++k) {
-      auto it = local.find(m_.quads[e][k]);
+    MeshElement q = {-1, -1, -1, -1};
+    for (int k = 0; k < ElementNodes(m_.elems[e]); ++k) {
+      auto it = local.find(m_.elems[e][k]);
       if (it == local.end()) {
-        it = local.emplace(m_.quads[e][k], (int)sub.x.size()).first;
-        sub.x.push_back(m_.x[m_.quads[e][k]]);
+        it = local.emplace(m_.elems[e][k], (int)sub.x.size()).first;
+        sub.x.push_back(m_.x[m_.elems[e][k]]);
       }
       q[k] = it->second;
     }
-    sub.quads.push_back(q);
+    sub.elems.push_back(q);
   }
   const int s = boltnet::ContainingElement(sub, p, axis);
   return s < 0 ? -1 : elems[s];
@@ -159,7 +160,7 @@ std::vector<int> FootprintFinder::CouplingFootprint(const std::array<double, 3> 
   if (nodes.size() >= 3) return nodes;
   const int e = ContainingElement(p, axis);
   if (e < 0) return nodes;
-  for (int k = 0; k < 4; ++k) nodes.push_back(m_.quads[e][k]);
+  for (int k = 0; k < ElementNodes(m_.elems[e]); ++k) nodes.push_back(m_.elems[e][k]);
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;

@@ -30,7 +30,7 @@ private:
 };
 
 // The elements that touch each node (node -> element numbers, increasing).
-std::vector<std::vector<int>> NodeElements(const QuadMesh &m);
+std::vector<std::vector<int>> NodeElements(const ShellMesh &m);
 
 // The footprint searches of mesh.hpp on one part, through a NodeGrid, and restricted to the sheet
 // of the part nearest the fastener point along its axis: only nodes within `reach` of the point
@@ -39,7 +39,7 @@ std::vector<std::vector<int>> NodeElements(const QuadMesh &m);
 // brute-force functions of mesh.hpp would take it, these do not (docs/coupling.md).
 class FootprintFinder {
 public:
-  FootprintFinder(const QuadMesh &m, double reach);
+  FootprintFinder(const ShellMesh &m, double reach);
   std::vector<int> Footprint(const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius) const;
   int              ContainingElement(const std::array<double, 3> &p, const std::array<double, 3> &axis) const;
   std::vector<int> CouplingFootprint(const std::array<double, 3> &p, const std::array<double, 3> &axis, double radius) const;
@@ -48,7 +48,7 @@ public:
 private:
   // Nodes within in-plane distance r of p and within the reach along the axis, nearest sheet only.
   std::vector<int> Near(const std::array<double, 3> &p, const double n[3], double r, double sheet) const;
-  const QuadMesh               &m_;
+  const ShellMesh               &m_;
   double                        reach_, hmax_ = 0;
   NodeGrid                      grid_;
   std::vector<std::vector<int>> touching_;

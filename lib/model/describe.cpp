@@ -102,11 +102,11 @@ PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly a, PetscInt patch, PetscInt 
 }
 
 namespace boltnet {
-PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material)
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material)
 {
   PetscFunctionBeginUser;
   PetscCall(CheckNotSetUp(a));
-  PetscCheck(!mesh.quads.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  PetscCheck(!mesh.elems.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one element", id);
   const PetscInt pos = (PetscInt)a->model.parts.size();
   a->model.parts.push_back(PartDesc{id, PatchKind::Shell, mesh.x[0]});
   ShellPart &sp = a->model.shells[pos];
@@ -116,26 +116,48 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh,
 }
 } // namespace boltnet
 
-PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+namespace {
+// The shell patch of the C API: 4 entries per element, a triangle's fourth -1 where triangles are
+// allowed (BoltnetAssemblyAddShellPatchElements), every node in range and named once per element.
+PetscErrorCode AddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t, bool triangles)
 {
-  QuadMesh             mesh;
+  ShellMesh            mesh;
   shell::ShellMaterial mat;
+  const char          *what = triangles ? "element" : "quadrangle";
   PetscFunctionBeginUser;
-  PetscCheck(nnodes >= 4 && nquads >= 1 && xyz && quads, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one quadrangle", id);
+  PetscCheck(nnodes >= (triangles ? 3 : 4) && nelems >= 1 && xyz && elems, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one %s (it has %" PetscInt_FMT " nodes and %" PetscInt_FMT " elements)", id, what, nnodes, nelems);
   for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
-  for (PetscInt e = 0; e < nquads; ++e) {
-    std::array<int, 4> q;
-    for (int k = 0; k < 4; ++k) {
-      PetscCheck(quads[4 * e + k] >= 0 && quads[4 * e + k] < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": quadrangle %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT, id, e, quads[4 * e + k], nnodes - 1);
-      q[k] = (int)quads[4 * e + k];
+  for (PetscInt e = 0; e < nelems; ++e) {
+    MeshElement    q  = {-1, -1, -1, -1};
+    const PetscInt nn = triangles && elems[4 * e + 3] == -1 ? 3 : 4;
+    for (int k = 0; k < nn; ++k) {
+      const PetscInt v = elems[4 * e + k];
+      PetscCheck(v >= 0 && v < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT "%s", id, what, e, v, nnodes - 1, triangles && k < 3 ? "" : triangles ? " (or -1: a triangle)" : "");
+      for (int j = 0; j < k; ++j) PetscCheck(q[j] != v, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT " twice", id, what, e, v);
+      q[k] = (int)v;
     }
-    mesh.quads.push_back(q);
+    mesh.elems.push_back(q);
   }
   PetscCall(Guard(a->comm, [&] {
     mat = shell::IsotropicMaterial(E, nu, t);
     return PetscErrorCode(0);
   }));
   PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AddShellPatch(a, id, nnodes, xyz, nquads, quads, E, nu, t, false));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode BoltnetAssemblyAddShellPatchElements(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t)
+{
+  PetscFunctionBeginUser;
+  PetscCall(AddShellPatch(a, id, nnodes, xyz, nelems, elems, E, nu, t, true));
   PetscFunctionReturn(0);
 }
 

@@ -26,7 +26,7 @@ struct PartDesc {
 };
 
 struct ShellPart {
-  QuadMesh             mesh; // node sets included
+  ShellMesh            mesh; // node sets included
   shell::ShellMaterial material;
   double               drill = shell::kDefaultDrill;
 };

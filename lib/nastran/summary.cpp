@@ -37,7 +37,7 @@ PetscErrorCode Run(int *exitcode)
   nastran::Deck deck;
   PetscCall(NastranReadDeck(comm, path, read, &deck));
   PetscCall(NastranDeckView(deck, PETSC_VIEWER_STDOUT_(comm)));
-  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "nastran-summary", exitcode));
+  if (optionsLeft) PetscCall(UnusedOptionsAsError(comm, "nastran-summary", PETSC_FALSE, exitcode));
   PetscFunctionReturn(0);
 }
 

@@ -28,6 +28,8 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   PetscCall(SNESDestroy(&(*a)->snes));
   PetscCall(MatDestroy(&(*a)->J));
   PetscCall(MatDestroy(&(*a)->Jabs));
+  PetscCall(MatDestroy(&(*a)->Jbase));
+  PetscCall(MatDestroy(&(*a)->Pfac));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(DMDestroy(&(*a)->net.dm));
   PetscCallMPI(MPI_Comm_free(&(*a)->comm));
@@ -60,6 +62,7 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsInt("-patch_max_nodes", "Largest shell patch in nodes: a larger part is cut by METIS into patches joined by seam edges (0: never cut; -1: automatic: condensed, at most 3000 nodes and about four patches per rank, none cut below 64 nodes; kept whole, about eight patches per rank and no cut on one rank)", "BoltnetAssemblySetFromOptions", o.patch_max_nodes, &o.patch_max_nodes, nullptr));
   PetscCall(PetscOptionsBool("-patch_balance", "Distribute the patches over the ranks by dof with METIS (false: PETSc's partitioner, by edge count)", "BoltnetAssemblySetFromOptions", o.balance, &o.balance, nullptr));
   PetscCall(PetscOptionsReal("-coupling_penalty", "Penalty of the rigid footprint links, as a multiple of the shell's membrane stiffness A11 (N/mm)", "BoltnetAssemblySetFromOptions", o.coupling_penalty, &o.coupling_penalty, nullptr));
+  PetscCall(PetscOptionsBool("-shell_directors", "On curved shell parts, give the elements around each node the mean of their normals there as the common director (folds keep each element's own normal); false: every element its own normals (docs/shell.md)", "BoltnetAssemblySetFromOptions", o.shell_directors, &o.shell_directors, nullptr));
   PetscCall(PetscOptionsBool("-joint_stuck_linear", "Solve joints that stay stuck as linear springs (no state logic) and keep the Jacobian and its factorisation while no joint's tangent changes; every such joint is checked with the full law before a step is accepted", "BoltnetAssemblySetFromOptions", o.stuck_linear, &o.stuck_linear, nullptr));
   PetscCall(PetscOptionsReal("-joint_stuck_margin", "Solve a joint as a linear spring in a step when its predicted utilization (trial force / friction threshold, or jump / clearance) stays below this", "BoltnetAssemblySetFromOptions", o.stuck_margin, &o.stuck_margin, nullptr));
   PetscCall(PetscOptionsBool("-joint_monitor", "Print, per Newton iteration, the joints in each state and how many changed (summed over ranks)", "BoltnetAssemblySetFromOptions", o.monitor_states, &o.monitor_states, nullptr));

@@ -47,6 +47,8 @@ struct AssemblyOptions {
   PetscReal    coupling_radius  = 4.0;
   PetscReal    coupling_reach   = 0;
   PetscReal    coupling_penalty = 1e3;
+  // Curved shell parts: the elements around a node share the mesh's nodal director (docs/shell.md).
+  PetscBool    shell_directors = PETSC_TRUE;
   PetscBool    setfromoptions_called = PETSC_FALSE;
 };
 
@@ -93,6 +95,20 @@ struct StepInfo {
   PetscInt  cutbacks;   // cut-backs needed before this step converged
 };
 
+// Where the load path stands after the last converged step (solver/stepper.cpp): the path's
+// targets are LoadPathTargets(start, ...) (solver/loadpath.hpp); the step being approached is
+// targets[target], from the last converged load factor by increments of sub (0: the whole way to the
+// target, the first attempt; else the increment cut-backs left), after `halved` halvings on the way
+// to it. A checkpoint keeps it, so that a restart goes on exactly where the run stopped
+// (io/checkpoint.hpp).
+struct PathPosition {
+  PetscReal start    = 0;
+  PetscInt  ntargets = 0;
+  PetscInt  target   = 0;
+  PetscReal sub      = 0;
+  PetscInt  halved   = 0;
+};
+
 // One row of results for one joint at one converged step (gathered to rank 0 for output).
 struct JointRecord {
   PetscInt  joint; // user id
@@ -124,6 +140,15 @@ struct _p_BoltnetAssembly {
   Mat       J         = nullptr;
   Vec       X         = nullptr; // converged solution
   PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
+  Mat       Jbase     = nullptr;     // the linear part of J (patches, seams), copied in before the joints
+  // The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
+  // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian,
+  // Pfac, refactored when the Krylov solve takes more than refactor_its iterations or fails).
+  PetscBool lagged       = PETSC_FALSE;
+  PetscInt  refactor_its = 25;
+  Mat       Pfac         = nullptr;
+  PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
+  PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
   Mat       Jabs      = nullptr;     // |J_ij| of the last Jacobian: the round-off of each row of K u
   // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md): a converged step must balance
@@ -136,6 +161,8 @@ struct _p_BoltnetAssembly {
   PetscReal lambda        = 0; // load factor of the last converged step
 
   // Record of the solve.
+  boltnet::PathPosition          path;
+  PetscBool                      resume = PETSC_FALSE; // the next solve goes on from `path` (a restart)
   std::vector<boltnet::StepInfo> steps;
   PetscInt                       total_cutbacks = 0;
   std::string                    failure; // non-empty after a step failed beyond the cut-back bound
@@ -147,7 +174,7 @@ struct _p_BoltnetAssembly {
 namespace boltnet {
 
 // A shell part from a mesh (node sets included) and a section (model/describe.cpp).
-PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, QuadMesh &&mesh, const shell::ShellMaterial &material);
+PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material);
 
 // The network (network/build.cpp): lays the model out, builds and distributes the DMNetwork,
 // builds (and condenses) the operators of the owned patches and seams, the Jacobian and the

@@ -160,7 +160,7 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
       const Seam &seam = a->layout.seams.at(sc.index);
       auto       &Ks   = a->patches.seam_ops[e];
       Ks.resize(seam.elems.size());
-      for (size_t k = 0; k < seam.elems.size(); ++k) shell::ElementStiffness(seam.elems[k].X, seam.material, seam.drill, Ks[k]);
+      for (size_t k = 0; k < seam.elems.size(); ++k) ElementMatrixOf(seam.elems[k].geom, seam.material, seam.drill, Ks[k]);
     }
     PetscFunctionReturn(0);
   }));
@@ -191,6 +191,7 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   lo.reach     = a->opt.coupling_reach;
   lo.max_nodes = a->opt.patch_max_nodes < 0 ? AutomaticPatchSize(a) : a->opt.patch_max_nodes;
   lo.condense  = a->opt.condense;
+  lo.directors = a->opt.shell_directors;
   a->net.ndof_model = 0;
   for (const PartDesc &p : a->model.parts) {
     auto sh = a->model.shells.find(&p - a->model.parts.data());

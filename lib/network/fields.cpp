@@ -6,36 +6,33 @@
 #include "network/internal.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace boltnet {
 namespace {
 
-constexpr int kXdmfQuadrilateral = 5; // XDMF cell type codes (a triangle is 4)
+constexpr int kXdmfQuadrilateral = 5, kXdmfTriangle = 4; // XDMF cell type codes
 
 // The elements a patch writes, each element of a part exactly once over its patches: the patch's
 // whole elements, and of the elements it shares with other patches (ShellPatch::SharedElement, one
 // copy in every patch holding one of its nodes) those whose node 0 it holds: exactly one patch holds
-// any node. f(element number in the part, the patch's node numbers (-1: another patch's), the part's
-// node numbers, X). This is the only code that enumerates output elements: a mesh with triangles
-// adds its triangles here (XDMF type 4, three nodes) and nothing else changes but the XDMF topology
-// (io/fields.cpp).
+// any node. f(element number in the part, the patch's node numbers (-1: another patch's, or past a
+// triangle's third), the part's node numbers (-1 past a triangle's third), the geometry and
+// directors the stiffness uses). This is the only code that enumerates output elements.
 template <class F>
 void ElementsOf(const ShellPatch &sp, F &&f)
 {
   const auto partNode = [&](int l) { return sp.part_node.empty() ? l : sp.part_node[l]; };
-  for (size_t e = 0; e < sp.mesh.quads.size(); ++e) {
-    const auto        &q = sp.mesh.quads[e];
-    shell::Nodes       X;
-    std::array<int, 4> pn;
-    for (int k = 0; k < 4; ++k) {
-      X[k]  = sp.mesh.x[q[k]];
-      pn[k] = partNode(q[k]);
-    }
-    f(sp.part_elem.empty() ? (int)e : sp.part_elem[e], q, pn, X);
+  for (size_t e = 0; e < sp.mesh.elems.size(); ++e) {
+    const MeshElement &q  = sp.mesh.elems[e];
+    const int          nn = ElementNodes(q);
+    std::array<int, 4> pn{-1, -1, -1, -1};
+    for (int k = 0; k < nn; ++k) pn[k] = partNode(q[k]);
+    f(sp.part_elem.empty() ? (int)e : sp.part_elem[e], q, pn, GeometryOf(sp.mesh, q));
   }
   for (const auto &el : sp.shared)
-    if (el.node[0] >= 0) f(el.elem, el.node, el.part_node, el.X);
+    if (el.node[0] >= 0) f(el.elem, el.node, el.part_node, el.geom);
 }
 
 PetscErrorCode FinishSpace(MPI_Comm comm, FieldSpace &s)
@@ -79,7 +76,7 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
     if (!op.shell) continue;
     const ShellPatch &sp = a->layout.shells.at(op.index);
     count[2 * where(sp.id)] += (PetscInt)sp.mesh.x.size();
-    ElementsOf(sp, [&](int, const std::array<int, 4> &, const std::array<int, 4> &, const shell::Nodes &) { count[2 * where(sp.id) + 1]++; });
+    ElementsOf(sp, [&](int, const std::array<int, 4> &, const std::array<int, 4> &, const ElementGeometry &) { count[2 * where(sp.id) + 1]++; });
   }
   PetscCall(MPIU_Allreduce(count.data(), total.data(), (PetscMPIInt)(2 * np), MPIU_INT, MPI_SUM, comm));
   PetscInt noff = 0, eoff = 0;
@@ -99,9 +96,9 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
       m->nodes.natural.push_back(n0 + (sp.part_node.empty() ? (PetscInt)l : sp.part_node[l]));
       m->node_src.push_back({(PetscInt)i, (PetscInt)l});
     }
-    ElementsOf(sp, [&](int elem, const std::array<int, 4> &local, const std::array<int, 4> &pn, const shell::Nodes &X) {
-      FieldElement fe{sp.id, elem, (PetscInt)i, kXdmfQuadrilateral, 4, {}, local, X};
-      for (int k = 0; k < 4; ++k) {
+    ElementsOf(sp, [&](int elem, const std::array<int, 4> &local, const std::array<int, 4> &pn, const ElementGeometry &g) {
+      FieldElement fe{sp.id, elem, (PetscInt)i, g.n == 4 ? kXdmfQuadrilateral : kXdmfTriangle, g.n, {-1, -1, -1, -1}, local, g};
+      for (int k = 0; k < g.n; ++k) {
         fe.node[k] = n0 + pn[k];
         if (local[k] < 0) ghosts.insert(fe.node[k]);
       }
@@ -113,6 +110,9 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
   PetscCall(FinishSpace(comm, m->nodes));
   PetscCall(FinishSpace(comm, m->elems));
   PetscCall(FinishSpace(comm, m->joints));
+  PetscInt tri = 0;
+  for (const FieldElement &e : m->elements) tri += e.nn == 3;
+  PetscCall(MPIU_Allreduce(&tri, &m->ntriangles, 1, MPIU_INT, MPI_SUM, comm));
   PetscCheck(m->nodes.nglobal == noff && m->elems.nglobal == eoff && m->joints.nglobal == (PetscInt)a->layout.joints.size(), comm, PETSC_ERR_PLIB, "The output numbering does not cover the model once");
   // The other patches' nodes of the shared elements this rank writes, from the natural vectors.
   m->ghosts.assign(ghosts.begin(), ghosts.end());
@@ -200,6 +200,41 @@ PetscErrorCode FieldSpaceColumns(FieldSpace &s, Vec packed, PetscInt K, PetscInt
   PetscFunctionReturn(0);
 }
 
+shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u)
+{
+  shell::ElementOptions o;
+  o.drill = drill; // the options of the patch operator (ElementMatrixOf, patch/operator.cpp)
+  if (g.n == 4) return shell::ElementResults(g.X, g.directors ? &g.V : nullptr, mat, o, u);
+  shell::TriNodes     X;
+  shell::TriDirectors V;
+  shell::TriVector    ut;
+  std::copy(g.X.begin(), g.X.begin() + 3, X.begin());
+  std::copy(g.V.begin(), g.V.begin() + 3, V.begin());
+  std::copy(u.begin(), u.begin() + 18, ut.begin());
+  return shell::ElementResults(X, g.directors ? &V : nullptr, mat, o, ut);
+}
+
+std::array<shell::Vec3, 3> ElementAxesOf(const ElementGeometry &g)
+{
+  if (g.n == 4) {
+    const shell::ElementFrame f = shell::MakeElementFrame(g.X);
+    return {f.e1, f.e2, f.e3};
+  }
+  const shell::TriFrame f = shell::MakeElementFrame(shell::TriNodes{g.X[0], g.X[1], g.X[2]});
+  return {f.e1, f.e2, f.e3};
+}
+
+double ElementArea(const ElementGeometry &g)
+{
+  // Half the cross product of the diagonals (a flat quadrilateral) or of two sides (a triangle).
+  std::array<double, 3> d1, d2;
+  for (int c = 0; c < 3; ++c) {
+    d1[c] = g.X[2][c] - g.X[0][c];
+    d2[c] = g.n == 4 ? g.X[3][c] - g.X[1][c] : g.X[1][c] - g.X[0][c];
+  }
+  return 0.5 * std::sqrt(std::pow(d1[1] * d2[2] - d1[2] * d2[1], 2) + std::pow(d1[2] * d2[0] - d1[0] * d2[2], 2) + std::pow(d1[0] * d2[1] - d1[1] * d2[0], 2));
+}
+
 const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e)
 {
   return a->layout.shells.at(a->patches.owned[e.owned].index).material;
@@ -258,14 +293,12 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
     for (const FieldElement &e : m.elements) {
       const ShellPatch   &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
       const double       *d  = disp[e.owned].data();
-      shell::ElementVector ue;
+      shell::ElementVector ue{};
       for (int k = 0; k < e.nn; ++k) {
         const PetscInt g = e.local[k] < 0 ? m.ghost_index.at(e.node[k]) : -1;
         for (int c = 0; c < 6; ++c) ue[6 * k + c] = g < 0 ? d[6 * e.local[k] + c] : gd[6 * g + c];
       }
-      shell::ElementOptions o;
-      o.drill = sp.drill; // the options of the patch operator (patch/operator.cpp)
-      f->results.push_back(shell::ElementResults(e.X, nullptr, sp.material, o, ue));
+      f->results.push_back(ElementResultsOf(e.geom, sp.material, sp.drill, ue));
     }
     PetscFunctionReturn(0);
   }));
@@ -285,7 +318,7 @@ PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly a, PetscInt part,
 {
   struct Owned {
     std::array<int, 4>   pn;
-    shell::Nodes         X;
+    ElementGeometry      geom;
     shell::ShellMaterial material;
     double               drill;
   } el{};
@@ -297,9 +330,9 @@ PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly a, PetscInt part,
   for (const OwnedPatch &op : a->patches.owned) {
     if (!op.shell || a->layout.patches[op.index].id != part) continue;
     const ShellPatch &sp = a->layout.shells.at(op.index);
-    ElementsOf(sp, [&](int elem, const std::array<int, 4> &, const std::array<int, 4> &pn, const shell::Nodes &X) {
+    ElementsOf(sp, [&](int elem, const std::array<int, 4> &, const std::array<int, 4> &pn, const ElementGeometry &g) {
       if (elem != element) return;
-      el     = Owned{pn, X, sp.material, sp.drill};
+      el     = Owned{pn, g, sp.material, sp.drill};
       found  = a->rank;
     });
   }
@@ -318,7 +351,7 @@ PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly a, PetscInt part,
       if (!op.shell || a->layout.patches[op.index].id != part) continue;
       const ShellPatch   &sp = a->layout.shells.at(op.index);
       std::vector<double> u;
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0; k < el.geom.n; ++k) {
         int l = el.pn[k];
         if (!sp.part_node.empty()) l = (int)(std::find(sp.part_node.begin(), sp.part_node.end(), el.pn[k]) - sp.part_node.begin());
         if (l < 0 || l >= (int)sp.mesh.x.size()) continue;
@@ -331,14 +364,12 @@ PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly a, PetscInt part,
   }));
   PetscCall(RestoreLocalX(a, &Xl, &x));
   PetscCall(MPIU_Allreduce(loc, glob, 28, MPIU_REAL, MPIU_SUM, a->comm));
-  for (int k = 0; k < 4; ++k) PetscCheck(glob[24 + k] == 1, a->comm, PETSC_ERR_PLIB, "Node %d of element %" PetscInt_FMT " of patch %" PetscInt_FMT " is held %g times", el.pn[k], element, part, (double)glob[24 + k]);
+  for (int k = 0; k < el.geom.n; ++k) PetscCheck(glob[24 + k] == 1, a->comm, PETSC_ERR_PLIB, "Node %d of element %" PetscInt_FMT " of patch %" PetscInt_FMT " is held %g times", el.pn[k], element, part, (double)glob[24 + k]);
   shell::SectionResults r;
   PetscCall(Guard(a->comm, [&] {
     shell::ElementVector ue;
     std::copy(glob, glob + 24, ue.begin());
-    shell::ElementOptions o;
-    o.drill = el.drill; // the options of the patch operator (patch/operator.cpp)
-    r       = shell::ElementResults(el.X, nullptr, el.material, o, ue);
+    r = ElementResultsOf(el.geom, el.material, el.drill, ue);
     if (frame == BOLTNET_FRAME_MATERIAL) r = shell::Rotated(r, shell::MaterialAngle(r, el.material));
     return PetscErrorCode(0);
   }));

@@ -29,7 +29,7 @@ struct FieldSpace {
 };
 
 // An element this rank writes (network/fields.cpp ElementsOf: the only code that enumerates them).
-// XDMF cell type codes: 5 quadrilateral; a triangle (4) will have nn = 3.
+// XDMF cell type codes: 5 quadrilateral (nn = 4), 4 triangle (nn = 3).
 struct FieldElement {
   PetscInt              part;    // user id
   PetscInt              elem;    // number in the part
@@ -37,13 +37,14 @@ struct FieldElement {
   int                   type, nn;
   std::array<PetscInt, 4> node;  // natural node numbers
   std::array<int, 4>    local;   // the patch's own node number, or -1 (a node of another patch)
-  shell::Nodes          X;
+  ElementGeometry       geom;    // nodes and directors as the stiffness has them (patch/operator.cpp)
 };
 
 struct FieldMap {
   std::vector<PetscInt>              part_ids;         // shell parts, increasing
   std::map<PetscInt, PetscInt>       node_off, elem_off; // by part id
   FieldSpace                         nodes, elems, joints;
+  PetscInt                           ntriangles = 0;   // over all ranks: the rest are quadrilaterals
   std::vector<std::array<PetscInt, 2>> node_src;       // by owned node: (position in owned patches, patch node)
   std::vector<FieldElement>          elements;         // by owned element
   std::vector<PetscInt>              ghosts;           // natural numbers of the other patches' nodes
@@ -112,12 +113,18 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
 
 // The material frame of an owned element (the section law's, resultants.hpp).
 const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e);
+// The results at the centroid of a quadrilateral or triangle (u: 6 dof per node, a triangle's in
+// the first 18), with the directors and drilling factor of its stiffness.
+shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u);
+// The element frame's axes e1, e2, e3 (shell::MakeElementFrame) and the element's area.
+std::array<shell::Vec3, 3> ElementAxesOf(const ElementGeometry &g);
+double                     ElementArea(const ElementGeometry &g);
 
 // --- The gather-to-rank-0 writer, kept to measure against (network/fields_gather.cpp). ---
 struct PartField {
   PetscInt                           id;
   std::vector<std::array<double, 3>> x;
-  std::vector<std::array<int, 4>>    quads;
+  std::vector<std::array<int, 4>>    elems; // a triangle's fourth node: -1
   std::vector<double>                dof; // 6 per node
 };
 // On rank 0: every shell part and every joint (sorted by id); empty elsewhere.

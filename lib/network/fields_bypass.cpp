@@ -56,7 +56,7 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
     if (it == sides.end()) continue;
     std::array<double, 3> c{0, 0, 0};
     for (int i = 0; i < e.nn; ++i)
-      for (int d = 0; d < 3; ++d) c[d] += e.X[i][d] / e.nn;
+      for (int d = 0; d < 3; ++d) c[d] += e.geom.X[i][d] / e.nn;
     const Key k0 = key(c);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
@@ -102,10 +102,7 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
   for (const auto &[k, slot] : m.bypass_members) {
     const shell::SectionResults &r = f.results[k];
     const FieldElement          &e = m.elements[k];
-    // Area of the flat quadrilateral: half the cross product of its diagonals.
-    std::array<double, 3> d1, d2;
-    for (int c = 0; c < 3; ++c) d1[c] = e.X[2][c] - e.X[0][c], d2[c] = e.X[3][c] - e.X[1][c];
-    const double area = 0.5 * std::sqrt(std::pow(d1[1] * d2[2] - d1[2] * d2[1], 2) + std::pow(d1[2] * d2[0] - d1[0] * d2[2], 2) + std::pow(d1[0] * d2[1] - d1[1] * d2[0], 2));
+    const double                 area = ElementArea(e.geom);
     // N in global components: Nxx e1 e1 + Nyy e2 e2 + Nxy (e1 e2 + e2 e1).
     auto         T    = [&](int i, int j) { return r.N[0] * r.e1[i] * r.e1[j] + r.N[1] * r.e2[i] * r.e2[j] + r.N[2] * (r.e1[i] * r.e2[j] + r.e2[i] * r.e1[j]); };
     PetscScalar  v[kSums] = {area * T(0, 0), area * T(1, 1), area * T(2, 2), area * T(0, 1), area * T(1, 2), area * T(0, 2), area, 1};

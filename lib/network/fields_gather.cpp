@@ -30,7 +30,7 @@ std::array<double, 3> JointAttachmentPoint(BoltnetAssembly a, const JointComp &j
     const PetscReal *d = pos == j.va ? j.da : j.db;
     return {a->layout.patches[pos].x[0] + d[0], a->layout.patches[pos].x[1] + d[1], a->layout.patches[pos].x[2] + d[2]};
   }
-  const QuadMesh &m = sh->second.mesh;
+  const ShellMesh &m = sh->second.mesh;
   if (node < (PetscInt)m.x.size()) return m.x[node]; // attached to a mesh node (-coupling_type node)
   const ShellPatch::JointNode &jn = sh->second.joint_nodes.at(node - (PetscInt)m.x.size());
   double                       s  = 0;
@@ -82,10 +82,10 @@ PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &p
     PartField        &f     = byPart[sp.id];
     if (f.x.empty()) {
       auto            cut = a->layout.cut_parts.find(sp.id);
-      const QuadMesh &m   = cut == a->layout.cut_parts.end() ? sp.mesh : cut->second;
+      const ShellMesh &m  = cut == a->layout.cut_parts.end() ? sp.mesh : cut->second;
       f.id                = sp.id;
       f.x                 = m.x;
-      f.quads             = m.quads;
+      f.elems             = m.elems;
       f.dof.assign(6 * m.x.size(), 0.0);
     }
     for (size_t l = 0; l < sp.mesh.x.size(); ++l) {

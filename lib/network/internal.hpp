@@ -15,6 +15,8 @@ PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, siz
 
 // The Jacobian, preallocated exactly (network/jacobian.cpp).
 PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a);
+// The lagged interface solve's choice: refactor P from J now, or keep its factorisation.
+PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P);
 // The boundary rows of the owned patches (network/boundary.cpp).
 PetscErrorCode AssemblySetUpBoundary(BoltnetAssembly a);
 // The ghosted local copy of X (collective: every rank must call it, whatever it owns).
@@ -22,7 +24,7 @@ PetscErrorCode GetLocalX(BoltnetAssembly a, Vec X, Vec *Xl, const PetscScalar **
 PetscErrorCode RestoreLocalX(BoltnetAssembly a, Vec *Xl, const PetscScalar **x);
 
 // The 24 dof of a seam element in a vector whose seam vertices start at oa (side 0) and ob (side
-// 1); -1 for a node in a third patch.
+// 1); -1 for a node in a third patch and for a triangle's absent fourth node (side -1 both).
 void SeamElementDofs(const Seam::Element &el, PetscInt oa, PetscInt ob, PetscInt dofs[24]);
 // The offsets (global or local) of the two vertices of seam edge e.
 PetscErrorCode SeamOffsets(BoltnetAssembly a, PetscInt e, PetscBool global, PetscInt *oa, PetscInt *ob);

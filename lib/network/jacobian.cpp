@@ -211,7 +211,40 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscCall(MatDestroy(&pre));
   PetscCall(MatSetOption(a->J, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
   PetscCall(MatSetOption(a->J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  // The linear part, once: every patch and seam block, and zeros where the joints and the diagonal
+  // go (so that the assembly keeps their places). Each Jacobian starts as a copy of it.
+  for (const auto &rows : a->joints.rows) PetscCall(MatSetValues(a->J, 12, rows.data(), 12, rows.data(), zeros, ADD_VALUES));
+  for (PetscInt i = rstart; i < rstart + n; ++i) PetscCall(MatSetValue(a->J, i, i, 0.0, ADD_VALUES));
+  PetscCall(AddSeamBlocks(a, a->J, true));
+  PetscCall(AddPatchBlocks(a, a->J, true));
+  PetscCall(MatAssemblyBegin(a->J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(a->J, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatDuplicate(a->J, MAT_COPY_VALUES, &a->Jbase));
+  PetscCall(MatDuplicate(a->J, MAT_DO_NOT_COPY_VALUES, &a->Pfac));
+  PetscCall(MatSetOption(a->Pfac, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
   PetscCall(SetRigidBodyModes(a));
+  PetscFunctionReturn(0);
+}
+
+// The lagged interface solve: keep the factorisation of P while the Krylov solves it preconditions
+// converge quickly; refactor (P <- J) when the last solve took more than -interface_refactor_its
+// iterations or failed, and before the first solve. Joints that change state change J by a few
+// rows: the preconditioned operator P^-1 J is then the identity plus a low-rank term, and Krylov
+// converges in about that rank's iterations (docs/solver.md, "The interface solve").
+PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P)
+{
+  KSP                ksp;
+  KSPConvergedReason reason;
+  PetscInt           its;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPGetConvergedReason(ksp, &reason));
+  PetscCall(KSPGetIterationNumber(ksp, &its));
+  if (!a->pfac_valid || reason < 0 || its > a->refactor_its) {
+    PetscCall(MatCopy(J, P, SAME_NONZERO_PATTERN));
+    a->pfac_valid = PETSC_TRUE;
+    ++a->factorisations;
+  }
   PetscFunctionReturn(0);
 }
 
@@ -226,17 +259,21 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // Linear where it can be: the patches and seams are linear, so when no joint's tangent differs
   // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
   // object state, and PCSetUp then keeps the factorisation too.
-  if (a->opt.stuck_linear && J == P && P == a->J && js.jac_valid) {
+  if (a->opt.stuck_linear && J == a->J && (P == J || P == a->Pfac) && js.jac_valid) {
     PetscMPIInt changed = 0, any;
     for (size_t k = 0; k < resp.size() && !changed; ++k) changed = std::memcmp(resp[k].tangent.data(), js.jac_tangent[k].data(), sizeof(Mat6)) != 0;
     PetscCallMPI(MPIU_Allreduce(&changed, &any, 1, MPI_INT, MPI_LOR, a->comm));
     if (!any) {
       ++js.jac_reused;
+      if (P == a->Pfac) PetscCall(AssemblyLaggedFactorisation(a, J, P));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
       PetscFunctionReturn(0);
     }
   }
-  PetscCall(MatZeroEntries(P));
+  // J = the linear part (Jbase) + the joints. In the lagged interface solve, P is the last matrix
+  // factored: the Krylov solve on J is preconditioned by it, and it is refactored only when needed.
+  Mat M = P == a->Pfac ? J : P;
+  PetscCall(MatCopy(a->Jbase, M, SAME_NONZERO_PATTERN));
   for (size_t k = 0; k < js.size(); ++k) {
     PetscScalar vals[144];
     // In the joint plane (t1, t2), entries at round-off of the block's largest are zeros that the
@@ -262,20 +299,19 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
           for (int q = 0; q < 6; ++q) v += Ti[6 * p + (i % 6)] * K[6 * p + q] * Tj[6 * q + (j % 6)];
         vals[12 * i + j] = sign * v;
       }
-    PetscCall(MatSetValues(P, 12, js.rows[k].data(), 12, js.rows[k].data(), vals, ADD_VALUES));
+    PetscCall(MatSetValues(M, 12, js.rows[k].data(), 12, js.rows[k].data(), vals, ADD_VALUES));
   }
-  PetscCall(AddSeamBlocks(a, P, true));
-  PetscCall(AddPatchBlocks(a, P, true));
-  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatZeroRows(P, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
-  PetscCall(MatNorm(P, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
-  PetscCall(AbsoluteEntries(a, P));
+  PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatZeroRows(M, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
+  PetscCall(MatNorm(M, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
+  PetscCall(AbsoluteEntries(a, M));
   ++js.jac_assembled;
-  js.jac_valid = (P == a->J) ? PETSC_TRUE : PETSC_FALSE;
+  js.jac_valid = (M == a->J) ? PETSC_TRUE : PETSC_FALSE;
   js.jac_tangent.resize(resp.size());
   for (size_t k = 0; k < resp.size(); ++k) js.jac_tangent[k] = resp[k].tangent;
-  if (J != P) {
+  if (M != P) PetscCall(AssemblyLaggedFactorisation(a, J, P));
+  else if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }

@@ -54,7 +54,7 @@ PetscErrorCode CheckModel(MPI_Comm comm, const Model &m)
 }
 
 // The nodes of a shell part that a boundary condition names.
-std::vector<int> BCNodes(const BCDesc &bc, const QuadMesh &mesh)
+std::vector<int> BCNodes(const BCDesc &bc, const ShellMesh &mesh)
 {
   if (bc.set.empty()) {
     std::vector<int> all(mesh.x.size());
@@ -156,7 +156,7 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     for (const auto &jn : part.joint_nodes) {
       std::set<int> c(jn.footprint.begin(), jn.footprint.end());
       for (int v : jn.footprint)
-        for (int e : touching[v]) c.insert(part.mesh.quads[e].begin(), part.mesh.quads[e].end());
+        for (int e : touching[v]) c.insert(part.mesh.elems[e].begin(), part.mesh.elems[e].begin() + ElementNodes(part.mesh.elems[e]));
       clusters.emplace_back(c.begin(), c.end());
     }
   }
@@ -180,32 +180,36 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     ShellPatch &sub = subs[cut.patch[v]];
     local[v]        = (int)sub.mesh.x.size();
     sub.mesh.x.push_back(part.mesh.x[v]);
+    if (!part.mesh.directors.empty()) sub.mesh.directors.push_back(part.mesh.directors[v]);
     sub.part_node.push_back(v);
     nodemap[v] = {first + cut.patch[v], local[v]};
   }
   std::map<std::pair<int, int>, Seam> seams;
-  for (int e = 0; e < (int)part.mesh.quads.size(); ++e) {
-    const auto   &q = part.mesh.quads[e];
+  for (int e = 0; e < (int)part.mesh.elems.size(); ++e) {
+    const MeshElement &q  = part.mesh.elems[e];
+    const int          nn = ElementNodes(q);
     std::set<int> in;
-    for (int k = 0; k < 4; ++k) in.insert(cut.patch[q[k]]);
+    for (int k = 0; k < nn; ++k) in.insert(cut.patch[q[k]]);
     if (in.size() == 1) {
-      subs[*in.begin()].mesh.quads.push_back({local[q[0]], local[q[1]], local[q[2]], local[q[3]]});
+      MeshElement own = {-1, -1, -1, -1};
+      for (int k = 0; k < nn; ++k) own[k] = local[q[k]];
+      subs[*in.begin()].mesh.elems.push_back(own);
       subs[*in.begin()].part_elem.push_back(e);
       continue;
     }
-    shell::Nodes X;
-    for (int k = 0; k < 4; ++k) X[k] = part.mesh.x[q[k]];
+    // The geometry and directors of the whole part: a shared element is the same element in every
+    // patch and seam that adds a share of it.
+    const ElementGeometry geom = GeometryOf(part.mesh, q);
     for (int s : in) {
-      ShellPatch::SharedElement el{X, {}, e, q};
-      for (int k = 0; k < 4; ++k) el.node[k] = cut.patch[q[k]] == s ? local[q[k]] : -1;
+      ShellPatch::SharedElement el{geom, {-1, -1, -1, -1}, e, q};
+      for (int k = 0; k < nn; ++k) el.node[k] = cut.patch[q[k]] == s ? local[q[k]] : -1;
       subs[s].shared.push_back(el);
     }
     for (int s : in)
       for (int t : in) {
         if (t <= s) continue;
-        Seam::Element el;
-        el.X = X;
-        for (int k = 0; k < 4; ++k) {
+        Seam::Element el{geom, {-1, -1, -1, -1}, {-1, -1, -1, -1}};
+        for (int k = 0; k < nn; ++k) {
           const int p = cut.patch[q[k]];
           el.side[k]  = p == s ? 0 : p == t ? 1 : -1;
           el.node[k]  = el.side[k] < 0 ? -1 : local[q[k]];
@@ -280,6 +284,7 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     ShellPatch p;
     p.id       = m.parts[pos].id;
     p.mesh     = std::move(sp.mesh);
+    if (o.directors) p.mesh.directors = NodalDirectors(p.mesh); // empty on a flat part
     p.material = sp.material;
     p.drill    = sp.drill;
     parts[pos] = std::move(p);

@@ -51,6 +51,7 @@ struct LayoutOptions {
   double       reach     = 0;   // footprint reach along the fastener axis (mm); 0: 4 radius
   long         max_nodes = 0;   // largest patch in nodes (0: no cut)
   bool         condense  = false; // vertices carry the ports only
+  bool         directors = true;  // curved parts: the elements share the mesh's nodal directors
 };
 
 struct Layout {
@@ -59,7 +60,7 @@ struct Layout {
   std::map<PetscInt, ShellPatch> shells;    // the shell patches, by position in patches
   std::vector<Seam>              seams;
   std::vector<JointComp>         joints;    // in the model's order
-  std::map<PetscInt, QuadMesh>   cut_parts; // the whole meshes of the parts that were cut, by user id
+  std::map<PetscInt, ShellMesh>  cut_parts; // the whole meshes of the parts that were cut, by user id
   PetscInt                       nparts = 0;
 };
 

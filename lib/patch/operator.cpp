@@ -30,24 +30,48 @@ SlaveMap ExactSlaves(const ShellPatch &p)
   return s;
 }
 
+ElementGeometry GeometryOf(const ShellMesh &m, const MeshElement &e)
+{
+  ElementGeometry g;
+  g.n = ElementNodes(e);
+  for (int k = 0; k < g.n; ++k) g.X[k] = m.x[e[k]];
+  g.directors = ElementDirectors(m, e, g.V);
+  return g;
+}
+
+void ElementMatrixOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, shell::ElementMatrix &K)
+{
+  shell::ElementOptions o;
+  o.drill              = drill;
+  const shell::Vec3 *V = g.directors ? g.V.data() : nullptr;
+  if (g.n == 4) {
+    shell::ElementStiffness(4, g.X.data(), V, mat, o, K.data());
+    return;
+  }
+  shell::TriMatrix Kt;
+  shell::ElementStiffness(g.n, g.X.data(), V, mat, o, Kt.data()); // throws unless n = 3
+  K.fill(0.0);
+  for (int r = 0; r < 18; ++r)
+    for (int c = 0; c < 18; ++c) K[24 * r + c] = Kt[18 * r + c];
+}
+
 Triplets ShellTriplets(const ShellPatch &p)
 {
   Triplets t;
-  t.reserve((p.mesh.quads.size() + p.shared.size()) * 576);
+  t.reserve((p.mesh.elems.size() + p.shared.size()) * 576);
   shell::ElementMatrix K;
-  for (const auto &q : p.mesh.quads) {
-    shell::Nodes X;
-    for (int k = 0; k < 4; ++k) X[k] = p.mesh.x[q[k]];
-    shell::ElementStiffness(X, p.material, p.drill, K);
-    for (int a = 0; a < 4; ++a)
+  for (const auto &q : p.mesh.elems) {
+    const ElementGeometry g = GeometryOf(p.mesh, q);
+    ElementMatrixOf(g, p.material, p.drill, K);
+    for (int a = 0; a < g.n; ++a)
       for (int i = 0; i < 6; ++i)
-        for (int b = 0; b < 4; ++b)
+        for (int b = 0; b < g.n; ++b)
           for (int j = 0; j < 6; ++j) t.emplace_back(6 * q[a] + i, 6 * q[b] + j, K[24 * (6 * a + i) + 6 * b + j]);
   }
   for (const auto &el : p.shared) { // the blocks between the patch's own nodes
-    shell::ElementStiffness(el.X, p.material, p.drill, K);
-    for (int a = 0; a < 4; ++a)
-      for (int b = 0; b < 4; ++b) {
+    ElementMatrixOf(el.geom, p.material, p.drill, K);
+    for (int a = 0; a < el.geom.n; ++a)
+      for (int b = 0; b < el.geom.n; ++b) {
         if (el.node[a] < 0 || el.node[b] < 0) continue;
         for (int i = 0; i < 6; ++i)
           for (int j = 0; j < 6; ++j) t.emplace_back(6 * el.node[a] + i, 6 * el.node[b] + j, K[24 * (6 * a + i) + 6 * b + j]);

@@ -18,17 +18,33 @@
 
 namespace boltnet {
 
+// One element as the shell kernels take it (shell::ElementStiffness(n, X, V, ...)): n = 3
+// (triangle) or 4 (quadrilateral) nodes X[0..n-1], and the mesh's directors V when it passes them
+// (mesh/mesh.hpp, ElementDirectors; otherwise the element uses its own normals).
+struct ElementGeometry {
+  int              n = 4;
+  shell::Nodes     X{};
+  shell::Directors V{};
+  bool             directors = false;
+};
+// Element e of mesh m.
+ElementGeometry GeometryOf(const ShellMesh &m, const MeshElement &e);
+// Its stiffness in the quadrilateral's 24 x 24 layout, for triangles and quadrilaterals alike: the
+// block of nodes a, b < n at rows 6 a + i, columns 6 b + j; a triangle's rows and columns 18..23
+// (no fourth node) are zero. Throws std::invalid_argument (from the element) on a degenerate one.
+void ElementMatrixOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, shell::ElementMatrix &K);
+
 struct ShellPatch {
   PetscInt             id = -1; // user id of the part
-  QuadMesh             mesh;    // the patch's own nodes (part_node: their number in the part), its
+  ShellMesh            mesh;    // the patch's own nodes (part_node: their number in the part), its
                                 // whole elements, its node sets (patch numbering)
   shell::ShellMaterial material;
   double               drill = shell::kDefaultDrill;
   // Elements shared with other patches of the part: node[k] is the patch's number of node k, or -1
-  // when node k lies in another patch. The patch adds the stiffness between its own nodes; the seams
-  // add the rest.
+  // when node k lies in another patch (or k = 3 of a triangle). The patch adds the stiffness between
+  // its own nodes; the seams add the rest.
   struct SharedElement {
-    shell::Nodes       X;
+    ElementGeometry    geom;
     std::array<int, 4> node;
     int                elem = -1;    // its number in the part (for output, network/fields.cpp)
     std::array<int, 4> part_node{}; // its nodes' numbers in the part
@@ -45,7 +61,7 @@ struct ShellPatch {
   std::map<std::string, PetscInt> part_set_size;
   // Number in the whole part of each mesh node of this patch (empty: the patch is the whole part).
   std::vector<int> part_node;
-  // Number in the whole part of each element of mesh.quads (empty: the patch is the whole part).
+  // Number in the whole part of each element of mesh.elems (empty: the patch is the whole part).
   std::vector<int> part_elem;
   // The nodes the network vertex carries, in order: every node (mesh, then joint nodes) when the
   // patch is kept whole, its ports (the joint nodes and the nodes a seam touches) when condensed.
@@ -58,14 +74,15 @@ struct ShellPatch {
 // A seam: the stiffness between the nodes of two patches va and vb (positions in the layout's patch
 // list) of one part, from the elements they share. side[k] says whether node k of an element is in
 // va (0), vb (1) or a third patch (-1); node[k] is its number in the network vertex (its position in
-// that patch's carried nodes). A seam adds only the blocks between va and vb.
+// that patch's carried nodes). A triangle's absent fourth node has side -1 like a node of a third
+// patch: nothing is added for it. A seam adds only the blocks between va and vb.
 struct Seam {
   PetscInt             part = -1; // user id of the part
   PetscInt             va = -1, vb = -1;
   shell::ShellMaterial material;
   double               drill = shell::kDefaultDrill;
   struct Element {
-    shell::Nodes       X;
+    ElementGeometry    geom;
     std::array<int, 4> side, node;
   };
   std::vector<Element> elems;

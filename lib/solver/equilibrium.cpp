@@ -242,7 +242,7 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   if (!lu) PetscFunctionReturn(0);
   PetscCall(PCFactorGetMatSolverType(pc, &type));
   if (!type || std::strcmp(type, MATSOLVERMUMPS)) PetscFunctionReturn(0);
-  PetscCall(KSPSetOperators(ksp, a->J, a->J));
+  PetscCall(KSPSetOperators(ksp, a->J, a->lagged ? a->Pfac : a->J));
   PetscCall(PCFactorSetUpMatSolverType(pc));
   PetscCall(PCFactorGetMatrix(pc, &F));
   // Set before the first factorisation; -mat_mumps_icntl_24 / -mat_mumps_cntl_3 still override them.
@@ -276,7 +276,7 @@ PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
   PetscCall(MatMumpsGetInfog(F, 28, nnull)); // INFOG(28): null pivots found by the last factorisation
   if (!*nnull) PetscFunctionReturn(0);
   Vec         z;
-  PetscBool   found;
+  PetscBool   found = PETSC_FALSE;
   std::string mech;
   PetscCall(MatCreateVecs(a->J, &z, nullptr));
   PetscCall(NullVector(a, z, &found));

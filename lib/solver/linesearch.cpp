@@ -21,9 +21,20 @@
 // measured there, and the Newton step (set by the tangent's floor, not by the residual) may end
 // short of the plateau's end. The step is doubled until a joint changes state, then bisected to
 // the first change and taken just past it, where the next Jacobian sees the new state (bearing).
-// Without a state function (any PETSc program loading the plugin) it is steps 1 and 3: a safeguarded
-// Armijo backtracking that keeps the contract of bt (pre/post-check, maxstep, Inf/NaN and domain
-// errors cut the step, failure reported as a line-search reason).
+// Without a state function it is steps 1 and 3: a safeguarded Armijo backtracking that keeps the
+// contract of bt (pre/post-check, maxstep, Inf/NaN and domain errors cut the step, failure reported
+// as a line-search reason).
+//
+// Where the state function comes from (StateSource below), first match wins:
+//   a. SNESLineSearchBoltnetSetStateChangeFunction() (boltnet's assembly), or the method it calls,
+//      "SNESLineSearchBoltnetSetStateChangeFunction_C", found with PetscObjectQueryFunction;
+//   b. a BoltnetStateChangeFn composed on the SNES as "SNESLineSearchBoltnetStateChange_C";
+//   c. a BoltnetSwitchFn composed on the SNES as "SNESLineSearchBoltnetSwitches_C" with a Vec of the
+//      switches' layout composed as "SNESLineSearchBoltnetSwitches": a state change is a switch
+//      indicator that changes sign (s > 0 against s <= 0).
+// b and c let a PETSc program that loads the plugin with -dll_append, and so cannot link boltnet,
+// give it its states (docs/petsc-plugin.md). They are looked up at every application, so they work
+// whenever they are composed and whatever the order of SNESSetFromOptions and SNESLineSearchSetType.
 #include "boltnet.h"
 #include "core/compat.h"
 #include "core/guard.hpp"
@@ -43,8 +54,9 @@ struct LineSearchBoltnet {
   PetscReal            growth    = 1e3;   // ... while ||F|| stays below growth * reference
   PetscInt             watch     = 0;     // steps taken since the reference point
   PetscReal            ref       = 0;     // ||F|| at the reference point
-  BoltnetStateChangeFn statefn   = nullptr;
+  BoltnetStateChangeFn statefn   = nullptr; // set by SNESLineSearchBoltnetSetStateChangeFunction()
   void                *statectx  = nullptr;
+  Vec                  sref = nullptr, strial = nullptr; // switch indicators at X and at the trial point
   PetscInt             kinkSteps = 0;     // statistics, shown by -snes_linesearch_view
   PetscInt             backtracks = 0;
   PetscInt             relaxed    = 0;    // full steps taken by the watchdog
@@ -53,6 +65,105 @@ struct LineSearchBoltnet {
 
 // ||F|| unchanged by a step, to round-off: the residual is flat along it.
 bool Flat(PetscReal gnorm, PetscReal fnorm) { return std::isfinite(gnorm) && std::abs(gnorm - fnorm) <= 1e-10 * fnorm; }
+
+// Where this application's state function comes from (see the top of the file).
+enum class StateKind { None, Set, Composed, Switches };
+const char *StateKindName(StateKind k)
+{
+  switch (k) {
+  case StateKind::Set: return "attached (SNESLineSearchBoltnetSetStateChangeFunction)";
+  case StateKind::Composed: return "attached (SNESLineSearchBoltnetStateChange_C composed on the SNES)";
+  case StateKind::Switches: return "attached (switch indicators SNESLineSearchBoltnetSwitches_C composed on the SNES)";
+  default: return "not attached (plain backtracking)";
+  }
+}
+
+struct StateSource {
+  StateKind            kind = StateKind::None;
+  BoltnetStateChangeFn fn   = nullptr;
+  BoltnetSwitchFn      sw   = nullptr;
+  void                *ctx  = nullptr;
+  Vec                  layout = nullptr; // composed with the switch function
+  PetscBool            haveRef = PETSC_FALSE; // switches at X computed (X does not change during an application)
+};
+
+PetscErrorCode GetStateSource(LineSearchBoltnet *bn, SNES snes, StateSource *src)
+{
+  PetscFunctionBeginUser;
+  *src = StateSource();
+  if (bn->statefn) {
+    src->kind = StateKind::Set;
+    src->fn   = bn->statefn;
+    src->ctx  = bn->statectx;
+    PetscFunctionReturn(0);
+  }
+  if (!snes) PetscFunctionReturn(0);
+  PetscCall(PetscObjectQueryFunction((PetscObject)snes, SNESLINESEARCHBOLTNET_STATECHANGE, &src->fn));
+  if (!src->fn) PetscCall(PetscObjectQueryFunction((PetscObject)snes, SNESLINESEARCHBOLTNET_SWITCHES_FN, &src->sw));
+  if (!src->fn && !src->sw) PetscFunctionReturn(0);
+  PetscCall(SNESGetApplicationContext(snes, &src->ctx));
+  if (src->fn) {
+    src->kind = StateKind::Composed;
+    PetscFunctionReturn(0);
+  }
+  PetscObject obj;
+  PetscCall(PetscObjectQuery((PetscObject)snes, SNESLINESEARCHBOLTNET_SWITCHES_VEC, &obj));
+  PetscCheck(obj, PetscObjectComm((PetscObject)snes), PETSC_ERR_ARG_WRONGSTATE, "A switch function is composed on the SNES as \"%s\" but no Vec of the switches' layout as \"%s\" (docs/petsc-plugin.md)", SNESLINESEARCHBOLTNET_SWITCHES_FN, SNESLINESEARCHBOLTNET_SWITCHES_VEC);
+  PetscCheck(obj->classid == VEC_CLASSID, PetscObjectComm((PetscObject)snes), PETSC_ERR_ARG_WRONG, "The object composed on the SNES as \"%s\" is a %s, not a Vec", SNESLINESEARCHBOLTNET_SWITCHES_VEC, obj->class_name);
+  src->kind   = StateKind::Switches;
+  src->layout = (Vec)obj;
+  PetscFunctionReturn(0);
+}
+
+// The work vectors of the switch indicators follow the composed layout Vec (it may be replaced).
+PetscErrorCode SwitchVectors(LineSearchBoltnet *bn, Vec layout)
+{
+  PetscBool same = PETSC_FALSE;
+  PetscFunctionBeginUser;
+  if (bn->sref) {
+    PetscInt n0, n1, N0, N1;
+    PetscCall(VecGetLocalSize(bn->sref, &n0));
+    PetscCall(VecGetLocalSize(layout, &n1));
+    PetscCall(VecGetSize(bn->sref, &N0));
+    PetscCall(VecGetSize(layout, &N1));
+    same = (n0 == n1 && N0 == N1) ? PETSC_TRUE : PETSC_FALSE;
+    // Local sizes may change on some ranks only: every rank must take the same branch below.
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &same, 1, MPIU_BOOL, MPI_LAND, PetscObjectComm((PetscObject)layout)));
+  }
+  if (same) PetscFunctionReturn(0);
+  PetscCall(VecDestroy(&bn->sref));
+  PetscCall(VecDestroy(&bn->strial));
+  PetscCall(VecDuplicate(layout, &bn->sref));
+  PetscCall(VecDuplicate(layout, &bn->strial));
+  PetscFunctionReturn(0);
+}
+
+// The number of states that differ between X and W (summed over ranks), from the state source.
+PetscErrorCode CountStateChanges(LineSearchBoltnet *bn, StateSource *src, SNES snes, Vec X, Vec W, PetscInt *n)
+{
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (src->fn) {
+    PetscCall((*src->fn)(snes, X, W, n, src->ctx));
+    PetscFunctionReturn(0);
+  }
+  if (!src->haveRef) {
+    PetscCall(SwitchVectors(bn, src->layout));
+    PetscCall((*src->sw)(snes, X, bn->sref, src->ctx));
+    src->haveRef = PETSC_TRUE;
+  }
+  PetscCall((*src->sw)(snes, W, bn->strial, src->ctx));
+  const PetscScalar *a, *b;
+  PetscInt           m, local = 0;
+  PetscCall(VecGetLocalSize(bn->sref, &m));
+  PetscCall(VecGetArrayRead(bn->sref, &a));
+  PetscCall(VecGetArrayRead(bn->strial, &b));
+  for (PetscInt i = 0; i < m; ++i) local += ((PetscRealPart(a[i]) > 0) != (PetscRealPart(b[i]) > 0));
+  PetscCall(VecRestoreArrayRead(bn->sref, &a));
+  PetscCall(VecRestoreArrayRead(bn->strial, &b));
+  PetscCall(MPIU_Allreduce(&local, n, 1, MPIU_INT, MPI_SUM, PetscObjectComm((PetscObject)bn->sref)));
+  PetscFunctionReturn(0);
+}
 
 // F at W = X - lambda Y; returns gnorm = inf when F could not be evaluated there.
 PetscErrorCode TryStep(SNESLineSearch ls, SNES snes, Vec X, Vec Y, PetscReal lambda, Vec W, Vec G, PetscReal *gnorm)
@@ -104,8 +215,11 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
     bn->watch = 0;
     bn->ref   = fnorm;
   }
-  const PetscReal f2    = fnorm * fnorm;
-  PetscBool       kinks = bn->statefn ? PETSC_TRUE : PETSC_FALSE;
+  StateSource src;
+  PetscCall(GetStateSource(bn, snes, &src));
+  const PetscBool states = src.kind != StateKind::None ? PETSC_TRUE : PETSC_FALSE;
+  const PetscReal f2     = fnorm * fnorm;
+  PetscBool       kinks  = states;
   PetscReal       best = PETSC_INFINITY, bestlambda = 0; // the best point tried, for an inexact Jacobian
   for (PetscInt it = 0; it < maxits && lambda >= minlambda; ++it) {
     PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm));
@@ -117,27 +231,27 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
       accepted = PETSC_TRUE;
       break;
     }
-    if (it == 0 && bn->statefn && Flat(gnorm, fnorm)) { // a plateau: lengthen the step to the next state change
+    if (it == 0 && states && Flat(gnorm, fnorm)) { // a plateau: lengthen the step to the next state change
       PetscInt n;
-      PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+      PetscCall(CountStateChanges(bn, &src, snes, X, W, &n));
       PetscReal lo = lambda, hi = lambda, g = gnorm;
       for (PetscInt k = 0; n == 0 && Flat(g, fnorm) && k < bn->extensions && 2 * hi * ynorm <= maxstep; ++k) {
         lo = hi;
         hi *= 2;
         PetscCall(TryStep(ls, snes, X, Y, hi, W, G, &g));
-        PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+        PetscCall(CountStateChanges(bn, &src, snes, X, W, &n));
       }
       if (n > 0 && hi > lambda) { // the first state change lies in (lo, hi]: just past it
         for (PetscInt k = 0; k < bn->bisections; ++k) {
           const PetscReal mid = 0.5 * (lo + hi);
           PetscCall(VecWAXPY(W, -mid, Y, X));
-          PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+          PetscCall(CountStateChanges(bn, &src, snes, X, W, &n));
           if (n > 0) hi = mid;
           else lo = mid;
         }
         PetscCall(TryStep(ls, snes, X, Y, hi, W, G, &g));
         if (std::isfinite(g) && g <= bn->growth * bn->ref) {
-          if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: ||F|| flat along the step; lengthened to the first joint state change, lambda %g, ||F|| %g\n", (double)hi, (double)g));
+          if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: ||F|| flat along the step; lengthened to the first state change, lambda %g, ||F|| %g\n", (double)hi, (double)g));
           lambda   = hi;
           gnorm    = g;
           accepted = PETSC_TRUE;
@@ -153,26 +267,26 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
       }
       PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm)); // back to the full step for what follows
     }
-    if (it == 0 && bn->statefn && bn->watch < bn->watchdog && std::isfinite(gnorm) && gnorm <= bn->growth * bn->ref) {
+    if (it == 0 && states && bn->watch < bn->watchdog && std::isfinite(gnorm) && gnorm <= bn->growth * bn->ref) {
       accepted = PETSC_TRUE; // the watchdog's full step
       bn->relaxed++;
       if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: watchdog takes the full step, ||F|| %g -> %g (%" PetscInt_FMT " of %" PetscInt_FMT " without progress)\n", (double)fnorm, (double)gnorm, bn->watch + 1, bn->watchdog));
       break;
     }
-    if (kinks) { // look for the first joint state change on (0, lambda]
+    if (kinks) { // look for the first state change on (0, lambda]
       kinks = PETSC_FALSE;
       PetscInt n;
-      PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+      PetscCall(CountStateChanges(bn, &src, snes, X, W, &n));
       if (n > 0) {
         PetscReal lo = 0.0, hi = lambda;
         for (PetscInt k = 0; k < bn->bisections; ++k) {
           const PetscReal mid = 0.5 * (lo + hi);
           PetscCall(VecWAXPY(W, -mid, Y, X));
-          PetscCall((*bn->statefn)(snes, X, W, &n, bn->statectx));
+          PetscCall(CountStateChanges(bn, &src, snes, X, W, &n));
           if (n > 0) hi = mid;
           else lo = mid;
         }
-        if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: first joint state change at lambda in (%g, %g]\n", (double)lo, (double)hi));
+        if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: first state change at lambda in (%g, %g]\n", (double)lo, (double)hi));
         bn->kinkSteps++;
         lambda = hi;
         continue; // try just past the first state change
@@ -225,10 +339,10 @@ PetscErrorCode SNESLineSearchSetFromOptions_Boltnet(SNESLineSearch ls, PetscOpti
   PetscFunctionBeginUser;
   PetscOptionsHeadBegin(PetscOptionsObject, "SNESLineSearch boltnet options");
   PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_alpha", "Sufficient decrease parameter of ||F||^2", "SNESLineSearchBoltnet", bn->alpha, &bn->alpha, nullptr));
-  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_watchdog", "With joint states: full Newton steps allowed in a row without decreasing ||F|| below the last reference point (0: monotone search)", "SNESLineSearchBoltnet", bn->watchdog, &bn->watchdog, nullptr));
+  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_watchdog", "With a state function: full Newton steps allowed in a row without decreasing ||F|| below the last reference point (0: monotone search)", "SNESLineSearchBoltnet", bn->watchdog, &bn->watchdog, nullptr));
   PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_growth", "The watchdog's full steps are taken while ||F|| stays below this multiple of the reference point's", "SNESLineSearchBoltnet", bn->growth, &bn->growth, nullptr));
-  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_extensions", "With joint states: doublings of a step along which ||F|| stays flat, looking for the next joint state change (0: none)", "SNESLineSearchBoltnet", bn->extensions, &bn->extensions, nullptr));
-  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_bisections", "Bisections that locate the first joint state change along the step (resolution 2^-n)", "SNESLineSearchBoltnet", bn->bisections, &bn->bisections, nullptr));
+  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_extensions", "With a state function: doublings of a step along which ||F|| stays flat, looking for the next state change (0: none)", "SNESLineSearchBoltnet", bn->extensions, &bn->extensions, nullptr));
+  PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_bisections", "With a state function: bisections that locate the first state change along the step (resolution 2^-n)", "SNESLineSearchBoltnet", bn->bisections, &bn->bisections, nullptr));
   PetscOptionsHeadEnd();
   PetscCheck(bn->alpha > 0 && bn->alpha < 0.5, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_alpha %g must lie in (0, 0.5)", (double)bn->alpha);
   PetscCheck(bn->watchdog >= 0, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_watchdog %" PetscInt_FMT " must be >= 0", bn->watchdog);
@@ -245,7 +359,11 @@ PetscErrorCode SNESLineSearchView_Boltnet(SNESLineSearch ls, PetscViewer viewer)
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)viewer, PETSCVIEWERASCII, &ascii));
   if (ascii) {
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, watchdog %" PetscInt_FMT " steps below %g x reference, %" PetscInt_FMT " bisections, joint states %s\n", (double)bn->alpha, bn->watchdog, (double)bn->growth, bn->bisections, bn->statefn ? "attached" : "not attached (plain backtracking)"));
+    SNES        snes = nullptr;
+    StateSource src;
+    PetscCall(SNESLineSearchGetSNES(ls, &snes));
+    PetscCall(GetStateSource(bn, snes, &src));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, watchdog %" PetscInt_FMT " steps below %g x reference, %" PetscInt_FMT " bisections, state function %s\n", (double)bn->alpha, bn->watchdog, (double)bn->growth, bn->bisections, StateKindName(src.kind)));
     PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: watchdog full steps %" PetscInt_FMT ", steps limited to a state change %" PetscInt_FMT ", plateau steps lengthened %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->relaxed, bn->kinkSteps, bn->extended, bn->backtracks));
   }
   PetscFunctionReturn(0);
@@ -262,8 +380,11 @@ PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction_Boltnet(SNESLineSearc
 
 PetscErrorCode SNESLineSearchDestroy_Boltnet(SNESLineSearch ls)
 {
+  auto *bn = static_cast<LineSearchBoltnet *>(ls->data);
   PetscFunctionBeginUser;
-  delete static_cast<LineSearchBoltnet *>(ls->data);
+  PetscCall(VecDestroy(&bn->sref));
+  PetscCall(VecDestroy(&bn->strial));
+  delete bn;
   ls->data = nullptr;
   PetscCall(PetscObjectComposeFunction((PetscObject)ls, "SNESLineSearchBoltnetSetStateChangeFunction_C", nullptr));
   PetscFunctionReturn(0);

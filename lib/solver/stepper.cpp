@@ -17,11 +17,19 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   KSP            ksp;
   PC             pc;
   PetscFunctionBeginUser;
+  const char *isolves[] = {"direct", "lagged"};
+  PetscInt    isolve    = a->lagged ? 1 : 0;
+  PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
+  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes) or lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations): docs/solver.md", "AssemblySetUpSolver", isolves, 2, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->refactor_its, &a->refactor_its, nullptr));
+  PetscOptionsEnd();
+  PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
+  a->lagged = isolve == 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
   PetscCall(SNESSetDM(a->snes, a->net.dm));
   PetscCall(SNESSetFunction(a->snes, nullptr, AssemblyFormFunction, a));
-  PetscCall(SNESSetJacobian(a->snes, a->J, a->J, AssemblyFormJacobian, a));
+  PetscCall(SNESSetJacobian(a->snes, a->J, a->lagged ? a->Pfac : a->J, AssemblyFormJacobian, a));
   PetscCall(SNESMonitorSet(a->snes, MonitorJointStates, a, nullptr));
   // Defaults that the command line overrides: Newton with boltnet's line search, direct solve.
   PetscCall(SNESSetType(a->snes, SNESNEWTONLS));
@@ -29,7 +37,12 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBOLTNET));
   PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, 1e-10, 0.0, 50, PETSC_DEFAULT));
   PetscCall(SNESGetKSP(a->snes, &ksp));
-  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  if (a->lagged) { // right preconditioning: GMRES then watches the true residual of J
+    PetscCall(KSPSetType(ksp, KSPGMRES));
+    PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
+    PetscCall(KSPGMRESSetRestart(ksp, 100));
+    PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
+  } else PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
@@ -105,6 +118,18 @@ PetscErrorCode ConvergedInBalance(SNES snes, PetscInt it, PetscReal xnorm, Petsc
   PetscFunctionReturn(0);
 }
 
+// The Newton iterations' linear solves and their Krylov iterations, for summary.json.
+PetscErrorCode RecordLinearSolves(BoltnetAssembly a)
+{
+  PetscInt its, lits;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetIterationNumber(a->snes, &its));
+  PetscCall(SNESGetLinearSolveIterations(a->snes, &lits));
+  a->linear_solves += its;
+  a->krylov_its += lits;
+  PetscFunctionReturn(0);
+}
+
 // Absolute tolerance for one step: round-off relative to the forces at play, so that a step whose
 // initial residual is already tiny (nothing changes) still converges.
 PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
@@ -132,6 +157,20 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   PetscFunctionReturn(0);
 }
 
+// A restart's path must be the one the checkpoint was written on: the same number of targets, and
+// the load factor reached where the saved position says it is (the driver also refuses a checkpoint
+// whose options differ; this guards the library's callers).
+PetscErrorCode CheckResumedPath(BoltnetAssembly a, const std::vector<PetscReal> &targets)
+{
+  const PathPosition &p = a->path;
+  PetscFunctionBeginUser;
+  PetscCheck(p.ntargets == (PetscInt)targets.size(), a->comm, PETSC_ERR_USER_INPUT, "The load path has %zu steps, the checkpoint's had %" PetscInt_FMT ": a restart must follow the path of the run that wrote the checkpoint (-load_path, -load_max, -load_table, -load_steps)", targets.size(), p.ntargets);
+  PetscCheck(p.target >= 0 && p.target <= p.ntargets, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint's position on the load path (step %" PetscInt_FMT " of %" PetscInt_FMT ") is not on it", p.target, p.ntargets);
+  const PetscReal reached = p.target == 0 ? p.start : targets[p.target - 1];
+  PetscCheck(p.sub != 0 || a->lambda == reached, a->comm, PETSC_ERR_USER_INPUT, "The checkpoint's load factor %.17g is not the load path's %.17g at its step %" PetscInt_FMT ": a restart must follow the path of the run that wrote the checkpoint", (double)a->lambda, (double)reached, p.target);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 } // namespace boltnet
 
@@ -143,14 +182,22 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
   PetscFunctionBeginUser;
   PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
   PetscCheck(steps_per_segment >= 1, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "steps_per_segment %" PetscInt_FMT " must be >= 1", steps_per_segment);
-  const std::vector<PetscReal> targets = LoadPathTargets(a->lambda, std::vector<PetscReal>(factors, factors + n), steps_per_segment);
+  // A new path starts from the current state; a restart (io/checkpoint.hpp) goes on along the path
+  // of the run that wrote the checkpoint, from where that run stood.
+  if (!a->resume) a->path = PathPosition{a->lambda, 0, 0, 0, 0};
+  const std::vector<PetscReal> targets = LoadPathTargets(a->path.start, std::vector<PetscReal>(factors, factors + n), steps_per_segment);
+  if (a->resume) PetscCall(CheckResumedPath(a, targets));
+  a->resume        = PETSC_FALSE;
+  a->path.ntargets = (PetscInt)targets.size();
   PetscCall(VecDuplicate(a->X, &Xtry));
-  for (PetscReal target : targets) {
-    PetscReal sub  = target - a->lambda; // current increment, halved on failure
-    PetscInt  cuts = 0;   // cut-backs since the last converged step (recorded with it)
-    PetscInt  halved = 0; // halvings on the way to this target: bounded by -load_max_cuts, and not
-                          // reset by a converged sub-step, else a load the structure cannot carry
-                          // (a mechanism at 450 N) is approached by ever smaller sub-steps forever
+  for (size_t i = (size_t)a->path.target; i < targets.size(); ++i) {
+    const PetscReal target = targets[i];
+    PetscReal sub    = a->path.sub != 0 ? a->path.sub : target - a->lambda; // current increment, halved on failure
+    PetscInt  cuts   = 0;              // cut-backs since the last converged step (recorded with it)
+    PetscInt  halved = a->path.halved; // halvings on the way to this target: bounded by -load_max_cuts,
+                                       // and not reset by a converged sub-step, else a load the structure
+                                       // cannot carry (a mechanism at 450 N) is approached by ever
+                                       // smaller sub-steps forever
     while (a->lambda != target) {
       const PetscBool last = std::abs(target - a->lambda) <= std::abs(sub) * (1 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
       a->lambda_target     = last ? target : a->lambda + sub;
@@ -164,6 +211,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
       PetscInt            its;
       PetscCall(SNESGetConvergedReason(a->snes, &reason));
       PetscCall(SNESGetIterationNumber(a->snes, &its));
+      PetscCall(RecordLinearSolves(a));
       // Joints solved as linear springs must still be stuck under the full law at the solution;
       // those that are not are released and the solve goes on from there. What is accepted is
       // then a solution of the full model.
@@ -180,6 +228,7 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         PetscCall(SNESSolve(a->snes, nullptr, Xtry));
         PetscCall(SNESGetConvergedReason(a->snes, &reason));
         PetscCall(SNESGetIterationNumber(a->snes, &more));
+        PetscCall(RecordLinearSolves(a));
         its += more;
       }
       PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
@@ -206,6 +255,9 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         StepInfo info{(PetscInt)a->steps.size() + 1, a->lambda, its, cuts};
         a->steps.push_back(info);
         cuts = 0;
+        // Where the path goes on from here: the next target, or this one by the increment left.
+        if (a->lambda == target) a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i + 1, 0, 0};
+        else a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i, sub, halved};
         if (a->on_step) PetscCall(a->on_step(a, info));
         continue;
       }
@@ -220,7 +272,14 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         std::string singular;
         PetscCall(SNESGetKSP(a->snes, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
+        // A Krylov solve preconditioned by a singular factorisation breaks down before the
+        // convergence test sees the null pivots: look at them here, before the reset.
+        if (a->singular.empty()) {
+          PetscInt nnull;
+          PetscCall(AssemblyCheckNullPivots(a, &nnull));
+        }
         PetscCall(PCReset(pc));
+        a->pfac_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
         PetscCall(AssemblySetUpNullPivots(a));
         if (!a->singular.empty()) singular = a->singular;
         else PetscCall(AssemblyDescribeSingular(a, Xtry, singular));

@@ -1,0 +1,191 @@
+// The results of a run continued after a restart (io/checkpoint.hpp, OutputResume): joints.csv and
+// bypass.csv cut after the checkpoint's step, fields.h5 reopened without the steps after it. Rank 0
+// checks them before any is changed; fields.h5, written by every rank, is then reopened by every rank.
+#include "core/errors.hpp"
+#include "io/checkpoint_file.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+
+namespace boltnet {
+namespace {
+
+// The length of joints.csv up to the end of the last row of step k (rows of later steps, or a row cut
+// short by the kill, come after it), or why the file cannot be continued: it must hold the header
+// and one row per joint for each of steps 1 to k.
+std::string JointsLength(const std::string &path, PetscInt k, size_t njoints, std::uintmax_t *length)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "Cannot restart: there is no " + path + " to continue (-output_dir must name the directory of the run that wrote the checkpoint)";
+  std::string    line;
+  std::uintmax_t at = 0, end = 0;
+  size_t         rows = 0;
+  PetscInt       last = 0;
+  bool           header = true;
+  while (std::getline(in, line)) {
+    if (in.eof()) break; // no newline: a row cut short
+    at += line.size() + 1;
+    if (header) {
+      if (line != kJointsHeader) return "Cannot restart: " + path + " does not start with the header of joints.csv";
+      header = false, end = at;
+      continue;
+    }
+    const PetscInt step = (PetscInt)std::strtol(line.c_str(), nullptr, 10);
+    if (step > k) break;
+    if (step < last || step < 1) return "Cannot restart: " + path + " has rows out of step order";
+    last = step, end = at, ++rows;
+  }
+  if (header || last != k || rows != (size_t)k * njoints)
+    return "Cannot restart: " + path + " holds " + std::to_string(rows) + " rows up to step " + std::to_string(last) + ", the checkpoint is at step " + std::to_string(k) + " of " + std::to_string(njoints) + " joints (-output_dir must name the directory of the run that wrote the checkpoint)";
+  *length = end;
+  return "";
+}
+
+// The length of bypass.csv up to the end of the rows of steps 1 to k (its rows are by step; a step
+// may have none: a fastener on no shell part), or why the file cannot be continued.
+std::string BypassLength(const std::string &path, PetscInt k, std::uintmax_t *length)
+{
+  std::ifstream  in(path, std::ios::binary);
+  std::string    line;
+  std::uintmax_t at = 0, end = 0;
+  PetscInt       last = 0;
+  if (!in || !std::getline(in, line) || in.eof() || line.rfind("step,", 0) != 0) return "Cannot restart: " + path + " does not start with the header of bypass.csv";
+  at = end = line.size() + 1;
+  while (std::getline(in, line)) {
+    if (in.eof()) break; // no newline: a row cut short
+    at += line.size() + 1;
+    const PetscInt step = (PetscInt)std::strtol(line.c_str(), nullptr, 10);
+    if (step > k) break;
+    if (step < last || step < 1) return "Cannot restart: " + path + " has rows out of step order";
+    last = step, end = at;
+  }
+  *length = end;
+  return "";
+}
+
+// Rank 0: fields.h5 opened (for writing with the former writer, which rank 0 alone writes; to read
+// otherwise), with step k in it, and the sizes of its model; the steps after k are not yet dropped.
+PetscErrorCode OpenFields(FieldsFile *ff, PetscInt k)
+{
+  PetscBool has;
+  PetscInt  bs, n;
+  PetscFunctionBeginUser;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // HDF5's own error stack: the message says it
+  PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/fields.h5").c_str(), ff->opt.gather ? FILE_MODE_APPEND : FILE_MODE_READ, &ff->viewer));
+  PetscCall(PetscViewerHDF5HasGroup(ff->viewer, FieldsStepGroup(k).c_str(), &has));
+  PetscCheck(has, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "it holds no step %" PetscInt_FMT, k);
+  PetscCall(PetscViewerHDF5PushGroup(ff->viewer, "/joints"));
+  PetscCall(PetscViewerHDF5ReadSizes(ff->viewer, "id", &bs, &n));
+  ff->njoints = n / bs;
+  PetscCall(PetscViewerHDF5PopGroup(ff->viewer));
+  PetscCall(PetscViewerHDF5HasGroup(ff->viewer, "/shells", &has));
+  if (has) {
+    PetscCall(PetscViewerHDF5PushGroup(ff->viewer, "/shells"));
+    PetscCall(PetscViewerHDF5ReadSizes(ff->viewer, "coordinates", &bs, &n));
+    ff->nnodes = n / 3;
+    PetscCall(PetscViewerHDF5ReadSizes(ff->viewer, "part", &bs, &n));
+    ff->nquads = n / bs; // the former writer's quadrilaterals; every element with the parallel one
+    PetscCall(PetscViewerHDF5PopGroup(ff->viewer));
+  }
+  PetscFunctionReturn(0);
+}
+
+// The steps after k out of fields.h5 (a killed run may have written some): by every rank that has
+// the file open (HDF5 changes a file's structure in collective calls).
+PetscErrorCode DropLaterFields(FieldsFile *ff, PetscInt k)
+{
+  hid_t     file;
+  PetscBool has = PETSC_TRUE;
+  PetscFunctionBeginUser;
+  PetscCall(PetscViewerHDF5GetFileId(ff->viewer, &file));
+  for (PetscInt s = k + 1; has; ++s) {
+    const std::string g = FieldsStepGroup(s);
+    PetscCall(PetscViewerHDF5HasGroup(ff->viewer, g.c_str(), &has));
+    if (has) PetscCheck(H5Ldelete(file, g.c_str(), H5P_DEFAULT) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "cannot remove %s", g.c_str());
+  }
+  PetscCall(PetscViewerFlush(ff->viewer));
+  PetscFunctionReturn(0);
+}
+
+// Rank 0: everything checked, then changed; "" or why not.
+std::string Resume(BoltnetAssembly a, Output *out)
+{
+  const PetscInt    k    = (PetscInt)a->steps.size();
+  const std::string csv  = out->dir + "/joints.csv";
+  std::uintmax_t    keep = 0;
+  std::string       why  = JointsLength(csv, k, a->layout.joints.size(), &keep);
+  if (!why.empty()) return why;
+  ErrorLog log;
+  if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
+  if (out->fields && OpenFields(&out->ff, k)) why = "Cannot continue the fields in " + out->dir + "/fields.h5: " + ErrorText(log) + " (-output_fields false restarts without fields)";
+  if (why.empty() && out->fields && out->ff.opt.gather && DropLaterFields(&out->ff, k)) why = "Cannot remove the steps after step " + std::to_string(k) + " from " + out->dir + "/fields.h5: " + ErrorText(log);
+  if (!why.empty() || !out->ff.opt.gather) PetscViewerDestroy(&out->ff.viewer); // a viewer whose file did not open fails to close too: not the error to report
+  PetscPopErrorHandler();
+  if (!why.empty()) return why;
+  // bypass.csv (the element results' companion) goes on after step k, if the run wrote one.
+  const std::string bypass = out->dir + "/bypass.csv";
+  std::uintmax_t    bkeep  = 0;
+  std::error_code   ec;
+  const bool        withBypass = out->fields && out->ff.opt.results && !out->ff.opt.gather && std::filesystem::exists(bypass, ec);
+  if (withBypass) {
+    why = BypassLength(bypass, k, &bkeep);
+    if (!why.empty()) return why;
+  }
+  std::filesystem::remove(out->dir + "/summary.json", ec); // this run writes its own at the end
+  std::filesystem::resize_file(csv, keep, ec);
+  if (ec) return "Cannot restart: cannot cut " + csv + " after step " + std::to_string(k) + ": " + ec.message();
+  out->csv = std::fopen(csv.c_str(), "a");
+  if (!out->csv) return "Cannot restart: cannot append to " + csv;
+  if (withBypass) {
+    std::filesystem::resize_file(bypass, bkeep, ec);
+    if (ec) return "Cannot restart: cannot cut " + bypass + " after step " + std::to_string(k) + ": " + ec.message();
+    out->ff.bypass = std::fopen(bypass.c_str(), "a");
+    if (!out->ff.bypass) return "Cannot restart: cannot append to " + bypass;
+  }
+  return "";
+}
+
+} // namespace
+
+PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out)
+{
+  PetscMPIInt rank;
+  std::string why;
+  PetscFunctionBeginUser;
+  PetscCheck(!a->steps.empty(), comm, PETSC_ERR_ORDER, "OutputResume() comes after CheckpointLoad()");
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  out->dir      = dir;
+  out->scene    = scene;
+  out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
+  out->ff.dir   = dir;
+  out->ff.scene = scene;
+  out->ff.opt   = fields;
+  if (rank == 0) {
+    try {
+      why = Resume(a, out);
+    } catch (const std::exception &e) {
+      why = std::string("Cannot restart: ") + e.what();
+    }
+    if (!why.empty()) {
+      PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+      OutputDiscard(out);
+      PetscPopErrorHandler();
+    }
+  }
+  PetscCall(ckpt::ShareText(comm, &why));
+  PetscCheck(why.empty(), comm, PETSC_ERR_FILE_UNEXPECTED, "%s", why.c_str());
+  // Every rank: the steps written (the next step writes no mesh), and fields.h5, which rank 0 found
+  // holding step k, opened by all for the parallel writer.
+  for (const StepInfo &s : a->steps) out->ff.steps.emplace_back(s.step, s.load);
+  if (out->fields && !out->ff.opt.gather) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    PetscCall(PetscViewerHDF5Open(comm, (dir + "/fields.h5").c_str(), FILE_MODE_APPEND, &out->ff.viewer));
+    PetscCall(DropLaterFields(&out->ff, (PetscInt)a->steps.size()));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace boltnet

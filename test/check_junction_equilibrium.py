@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""Equilibrium of each outer wing box of a junction scene (scripts/make-wing-fuselage), at every step.
+
+Requirement: the side-of-body joint carries the wing's loads: the outer box (its two skins and its
+substructure) is held only by the fasteners of the joint, so the forces and moments those fasteners
+apply to it must balance the loads applied at its tip, at every converged step of the load path:
+
+    sum_j F_j + lambda F_tip = 0,   sum_j ((x_j - O) x F_j + M_j) + lambda M_tip = 0
+
+F_tip, M_tip: the resultant of the tip's node-set forces about the side-of-body point O, computed by
+the generator from the node positions (NAME.model.json); lambda the load factor. F_j = the joint's
+force on the box's side in global axes, from joints.csv (force f on node B in the joint frame n, t1,
+t2: the joint pulls node A with +f and node B with -f); M_j = kr (theta_B - theta_A), the rotational
+spring's moment, with each node's rotation read in fields.h5 at its footprint (exact coupling: every
+footprint node turns with the joint node) and kr from summary.json (identified types) or the scene
+(spring types). Joints with both sides in the box (the attachments) cancel.
+
+Tolerance: the driver accepts a step when its out-of-balance force is below -load_equilibrium_rtol
+(1e-6) of the problem's force scale, the largest of the applied loads, the reactions and the joint
+forces (lib/solver/stepper.cpp), and Newton's last iteration usually lands far below it. Measured
+with the global factorisation (-patch_condense false): 1.7e-8 (tiny), 2.2e-10 (linear springs) of
+the applied resultant. 1e-6 keeps the driver's own bound, and is still three orders below a
+modelling error (a lost node force, a misplaced set: 1e-3 and above). With the condensed patches
+(the default) this scene balances to 1.5e-5 to 4.5e-5 only; the ctests use the global factorisation.
+
+usage: check_junction_equilibrium.py RESULTS_DIR SCENE.yaml [RTOL]
+"""
+import csv
+import json
+import os
+import sys
+
+import h5py
+import numpy as np
+
+
+def main():
+    res, scene = sys.argv[1], sys.argv[2]
+    rtol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-6
+    base = scene[:-5]
+    model = json.load(open(base + ".model.json"))
+    summary = json.load(open(os.path.join(res, "summary.json")))
+    if summary["status"] != "converged":
+        sys.exit(f"{res}: the run did not converge")
+    kr = {t: p["kr"] for t, p in summary.get("identified_joint_types", {}).items()}
+    for t, p in model["joint_types"].items():
+        if p["law"] == "spring":
+            kr[t] = p["kr"]
+    pid = {}
+    for r in csv.DictReader(l for l in open(base + ".patches.csv") if not l.startswith("#")):
+        pid[r["part"]] = int(r["id"])
+    table = {int(r["id"]): r for r in csv.DictReader(open(base + ".joints.csv"))}
+    h5 = h5py.File(os.path.join(res, "fields.h5"), "r")
+    X = h5["shells/coordinates"][:]
+    Q = h5["shells/cells"][:]  # quadrilaterals: the junction is meshed in them
+    qpart = h5["shells/part"][:, 0]
+    cent = X[Q].mean(axis=1)
+
+    def footprint_node(part, x):
+        """A node of the element of `part` that holds the fastener at x (nearest centroid)."""
+        idx = np.flatnonzero(qpart == part)
+        e = idx[np.argmin(np.linalg.norm(cent[idx] - x, axis=1))]
+        return Q[e]
+
+    frames, nodes = {}, {}
+    for j, r in table.items():
+        n = np.array([float(r[k]) for k in ("nx", "ny", "nz")])
+        n /= np.linalg.norm(n)
+        t1 = np.array([float(r[k]) for k in ("t1x", "t1y", "t1z")])
+        t1 -= n * (t1 @ n)
+        t1 /= np.linalg.norm(t1)
+        x = np.array([float(r[k]) for k in ("x", "y", "z")])
+        frames[j] = (n, t1, np.cross(n, t1), x)
+        nodes[j] = (footprint_node(int(r["patch_a"]), x), footprint_node(int(r["patch_b"]), x))
+    steps = {}
+    for r in csv.DictReader(open(os.path.join(res, "joints.csv"))):
+        steps.setdefault(int(r["step"]), []).append(r)
+    worst = 0.0
+    for wing in model["wings"]:
+        box = {pid[p] for p in wing["parts"]}
+        O = np.array(wing["origin"])
+        Ft, Mt = np.array(wing["force"]), np.array(wing["moment"])
+        for step, rows in sorted(steps.items()):
+            lam = float(rows[0]["load"])
+            rot = h5[f"steps/{step:06d}/shells/rotation"][:]
+            F, M = np.zeros(3), np.zeros(3)
+            for r in rows:
+                j = int(r["joint"])
+                ra, rb = int(table[j]["patch_a"]), int(table[j]["patch_b"])
+                sign = (ra in box) - (rb in box)   # +1: the box is A, -1: the box is B, 0: both or neither
+                if sign == 0:
+                    continue
+                n, t1, t2, x = frames[j]
+                f = float(r["f_n"]) * n + float(r["f_t1"]) * t1 + float(r["f_t2"]) * t2
+                na, nb = nodes[j]
+                tha, thb = rot[na], rot[nb]
+                # Exact coupling: the footprint turns rigidly (a check of the reading of fields.h5).
+                spread = max(np.ptp(tha, axis=0).max(), np.ptp(thb, axis=0).max())
+                if spread > 1e-9 * max(1e-12, np.abs(rot).max()):
+                    sys.exit(f"joint {j}: its footprint nodes do not share one rotation ({spread:.2e})")
+                F += sign * f
+                M += sign * (np.cross(x - O, f) + kr[table[j]["type"]] * (thb[0] - tha[0]))
+            if abs(lam) < 1e-14:
+                continue
+            ef = np.linalg.norm(F + lam * Ft) / (abs(lam) * np.linalg.norm(Ft))
+            em = np.linalg.norm(M + lam * Mt) / (abs(lam) * np.linalg.norm(Mt))
+            worst = max(worst, ef, em)
+            if ef > rtol or em > rtol:
+                print(f"{wing['side']} wing, step {step} (load {lam:g}): joints apply F {F} and M {M}; the tip load is "
+                      f"{-lam * Ft} and {-lam * Mt}: relative error {ef:.2e} (force), {em:.2e} (moment) > {rtol:g}")
+                return 1
+        print(f"{wing['side']} wing: the side-of-body fasteners balance the tip load (V {Ft[2]:.6g} N, moment {np.linalg.norm(Mt):.6g} N mm "
+              f"per g) at {len(steps)} steps")
+    print(f"worst relative error {worst:.2e} (rtol {rtol:g})")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
