@@ -3,8 +3,9 @@ static const char help[] = "boltnet: bolted assemblies with frictional macroelem
 Runs a scene: a PETSc YAML options file plus the CSV tables it names (patches, fastener table,\n\
 boundary conditions), through its load path, and writes results under -output_dir:\n\
 joints.csv (one row per joint per converged step), summary.json and, for scenes with shell patches,\n\
-fields.h5 + fields.xdmf (shell displacement and rotation, joints as lines with their state, per\n\
-step; open fields.xdmf in ParaView: docs/output.md).\n\
+fields.h5, fields.xdmf, joints.xdmf and bypass.csv (shell displacement, rotation and element\n\
+results, joints as lines with their state, per step, written in parallel; open the xdmf files in\n\
+ParaView: docs/output.md).\n\
 \n\
   mpirun -n 2 build/bin/boltnet -scene share/scenes/fig3c.yaml\n\
   mpirun -n 2 boltnet -scene fig3c        (installed: the scene share/boltnet/scenes/fig3c.yaml)\n\
@@ -56,7 +57,8 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   MPI_Comm        comm = PETSC_COMM_WORLD;
   char            file[PETSC_MAX_PATH_LEN] = "", outdir[PETSC_MAX_PATH_LEN] = "";
   char            ckfile[PETSC_MAX_PATH_LEN] = "", restart[PETSC_MAX_PATH_LEN] = "";
-  PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE, fields = PETSC_TRUE;
+  PetscBool       hasScene, helpOnly, optionsLeft = PETSC_FALSE;
+  FieldsOptions   fields;
   PetscInt        every = 0;
   CheckpointIdentity ident;
   Scene           scene;
@@ -71,7 +73,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
   PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>)", "", outdir, outdir, sizeof(outdir), nullptr));
-  PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5 + fields.xdmf per converged step (shell displacement/rotation, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", fields, &fields, nullptr));
+  PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &fields));
   PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", every, &every, nullptr));
   PetscCall(PetscOptionsString("-checkpoint_file", "The checkpoint file (default <output_dir>/checkpoint.h5), replaced whole at every checkpoint", "", ckfile, ckfile, sizeof(ckfile), nullptr));
   PetscCall(PetscOptionsString("-restart", "Go on from this checkpoint: same scene and options (those that change results), results continued in -output_dir", "", restart, restart, sizeof(restart), nullptr));

@@ -90,7 +90,7 @@ def joint_rotation(res, base, model):
     g = model["geometry"]
     pid = {r["part"]: int(r["id"]) for r in csv.DictReader(l for l in open(base + ".patches.csv") if not l.startswith("#"))}
     f = h5py.File(os.path.join(res, "fields.h5"), "r")
-    X, Q, qp = f["shells/coordinates"][:], f["shells/quads"][:], f["shells/part"][:, 0]
+    X, Q, qp = f["shells/coordinates"][:], f["shells/cells"][:], f["shells/part"][:, 0]
     t = "_r" if model["both_sides"] else ""
     sel = {}
     for box, y in (("centre", g["y_centre_edge"] - g["splice_width"]), ("outer", g["y_outer_edge"] + g["splice_width"])):

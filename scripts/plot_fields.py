@@ -50,8 +50,8 @@ def main():
             name = max(steps, key=lambda s: np.abs(f["steps"][s]["shells"]["displacement"][...]).max())
         g = f["steps"][name]
         x = f["shells/coordinates"][...]
-        # Quadrilaterals and triangles (either block may be absent: docs/output.md).
-        elems = [list(e) for name in ("shells/quads", "shells/triangles") if name in f for e in f[name][...].astype(int)]
+        # Cells padded with -1 past their node count (a triangle has three nodes).
+        cells = [c[c >= 0] for c in f["shells/cells"][...].astype(int)]
         u = g["shells/displacement"][...]
         xj = f["joints/coordinates"][...]
         uj = g["joints/displacement"][...]
@@ -65,8 +65,8 @@ def main():
     xd = x + scale * u
     mag = np.linalg.norm(u, axis=1)
     fig, ax = plt.subplots(figsize=(9, 5.5))
-    polys = [xd[q][:, [i, j]] for q in elems]
-    pc = PolyCollection(polys, array=np.array([mag[q].mean() for q in elems]), cmap="viridis", edgecolors="k", linewidths=0.1)
+    polys = [xd[c][:, [i, j]] for c in cells]
+    pc = PolyCollection(polys, array=np.array([mag[c].mean() for c in cells]), cmap="viridis", edgecolors="k", linewidths=0.1)
     ax.add_collection(pc)
     fig.colorbar(pc, ax=ax, label="|displacement| (mm)")
     mid = 0.5 * ((xj + scale * uj)[0::2] + (xj + scale * uj)[1::2])

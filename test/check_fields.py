@@ -1,11 +1,17 @@
 #!/usr/bin/python3
-"""Check fields.xdmf + fields.h5 of a boltnet run (docs/output.md).
+"""Check fields.h5, fields.xdmf and joints.xdmf of a boltnet run (docs/output.md).
 
   check_fields.py DIR SCENE_JOINTS_CSV [--ref DIR1 [--rtol R]] [--fixed PART,AXIS,VALUE,DOFS]...
                   [--elements quad|tri|mixed]
 
-- fields.xdmf parses as XML; every DataItem names a dataset of fields.h5 with exactly the declared
-  dimensions, number type and precision; topology sizes agree with NumberOfElements;
+- the xdmf files parse as XML (XDMF 3); every DataItem names a dataset of fields.h5 with exactly the
+  declared dimensions, data type and precision; topology sizes agree with NumberOfElements;
+- the numbering: every node of a part once (/shells/node_part, /shells/node: 0..n-1 per part), every
+  element of a part once (/shells/part, /shells/element), the cells' nodes in the cell's part;
+- the element results agree with one another: von Mises and principal stresses from the surface
+  stresses, the material-frame resultants the element-frame ones turned from /shells/element_axis to
+  /shells/material_axis;
+- with -output_joints_hdf5, each step's /joints/table equals joints.csv's rows;
 - one temporal step per converged step of joints.csv (rows = steps x joints), times increasing,
   each step's load factor (Information "load" and the HDF5 attribute) equal to joints.csv's;
 - independent of the writer: at every step, each joint line's endpoint displacements, differenced
@@ -14,10 +20,11 @@
 - --fixed: the nodes of shell part PART whose coordinate AXIS (x, y or z) equals VALUE have zero
   DOFS (colon-separated from ux uy uz rx ry rz, or all) at every step, and some node moves;
 - --ref DIR1: every dataset equals the one in DIR1 (another rank count) to R (default 1e-9) of its
-  quantity's scale (largest magnitude over all steps); integer datasets exactly;
-- --elements quad|tri|mixed: the shells are quadrilaterals (/shells/quads), triangles
-  (/shells/triangles, a grid of Triangle topology in the xdmf) or both, every shell node is a node of
-  some element, and each element's nodes belong to one part.
+  quantity's scale (largest magnitude over all steps, or for a quantity the load leaves zero the
+  load's scale in its units); integer datasets exactly;
+- --elements quad|tri|mixed: the shells are quadrilaterals, triangles or both (/shells/cell_type),
+  the xdmf topology is Quadrilateral or, with triangles, Mixed (/shells/topology: per cell its type
+  code and nodes), and every shell node is a node of some element.
 """
 import argparse
 import csv
@@ -51,6 +58,55 @@ def frame(row):
     return np.array([n, t, np.cross(n, t)])
 
 
+def check_numbering(h5):
+    """Every node and element of a part once, in the part's own numbering; cells within their part."""
+    npart, node = h5["/shells/node_part"][:, 0], h5["/shells/node"][:, 0]
+    cpart, elem = h5["/shells/part"][:, 0], h5["/shells/element"][:, 0]
+    cells = h5["/shells/cells"][:]
+    for p in np.unique(npart):
+        n = np.sort(node[npart == p])
+        if not np.array_equal(n, np.arange(len(n))):
+            fail(f"part {p}: its node numbers are not 0..{len(n) - 1} once each")
+        e = np.sort(elem[cpart == p])
+        if not np.array_equal(e, np.arange(len(e))):
+            fail(f"part {p}: its element numbers are not 0..{len(e) - 1} once each")
+    used = cells[cells >= 0]
+    if used.max() >= len(node) or (npart[cells] != cpart[:, None])[cells >= 0].any():
+        fail("a cell names a node outside its part")
+    print(f"check_fields: {len(node)} nodes and {len(elem)} elements of {len(np.unique(npart))} parts, each once")
+
+
+def check_results(h5, times):
+    """Element results consistent with one another at every step."""
+    ea, ma, nrm = h5["/shells/element_axis"][:], h5["/shells/material_axis"][:], h5["/shells/normal"][:]
+    c = np.einsum("ij,ij->i", ma, ea)
+    s = np.einsum("ij,ij->i", ma, np.cross(nrm, ea))
+    worst, nsteps = 0.0, 0
+    for t in times:
+        g = h5[f"/steps/{int(t):06d}/shells"]
+        if "N" not in g:
+            continue
+        nsteps += 1
+        for name in ("N", "M"):
+            a, b = g[name][:], g[name + "_element"][:]
+            xx = c * c * b[:, 0] + s * s * b[:, 1] + 2 * c * s * b[:, 2]
+            yy = s * s * b[:, 0] + c * c * b[:, 1] - 2 * c * s * b[:, 2]
+            xy = -c * s * b[:, 0] + c * s * b[:, 1] + (c * c - s * s) * b[:, 2]
+            scale = max(np.abs(b).max(), 1e-300)
+            worst = max(worst, np.abs(np.stack([xx, yy, xy], 1) - a).max() / scale)
+        for face in ("top", "bottom"):
+            st = g["stress_" + face][:]
+            vm = np.sqrt(st[:, 0] ** 2 - st[:, 0] * st[:, 1] + st[:, 1] ** 2 + 3 * st[:, 2] ** 2)
+            centre, radius = 0.5 * (st[:, 0] + st[:, 1]), np.hypot(0.5 * (st[:, 0] - st[:, 1]), st[:, 2])
+            scale = max(np.nanmax(np.abs(st)) if st.size else 0, 1e-300)
+            worst = max(worst, np.nanmax(np.abs(vm - g["von_mises_" + face][:])) / scale)
+            worst = max(worst, np.nanmax(np.abs(np.stack([centre + radius, centre - radius], 1) - g["principal_" + face][:])) / scale)
+    if worst > 1e-12:
+        fail(f"element results disagree with one another by {worst:g} of their scale")
+    if nsteps:
+        print(f"check_fields: element results of {nsteps} steps consistent (frames, von Mises, principal): {worst:.2g}")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("dir")
@@ -61,39 +117,59 @@ def main():
     ap.add_argument("--elements", choices=["quad", "tri", "mixed"])
     args = ap.parse_args()
 
-    root = ET.parse(args.dir + "/fields.xdmf").getroot()
     h5 = h5py.File(args.dir + "/fields.h5", "r")
-
+    roots = {}
+    for name in ("fields.xdmf", "joints.xdmf"):
+        try:
+            roots[name] = ET.parse(f"{args.dir}/{name}").getroot()
+        except FileNotFoundError:
+            if name == "joints.xdmf" or "shells" in h5:
+                fail(f"{name} is missing")
+    for name, root in roots.items():
+        if root.get("Version") != "3.0":
+            fail(f"{name}: Xdmf Version {root.get('Version')}, not 3.0")
     # Every DataItem against the file.
     nitems = 0
-    for item in root.iter("DataItem"):
-        nitems += 1
-        fname, path = item.text.strip().split(":", 1)
-        if fname != "fields.h5":
-            fail(f"DataItem names file {fname}")
-            continue
-        if path not in h5:
-            fail(f"{path} is not in fields.h5")
-            continue
-        ds = h5[path]
-        dims = tuple(int(d) for d in item.get("Dimensions").split())
-        if ds.shape != dims:
-            fail(f"{path}: shape {ds.shape} in the file, {dims} in the xdmf")
-        kind = "i" if item.get("NumberType") == "Int" else "f"
-        if ds.dtype.kind != kind or ds.dtype.itemsize != int(item.get("Precision")):
-            fail(f"{path}: dtype {ds.dtype}, xdmf says {item.get('NumberType')} {item.get('Precision')}")
-    for topo in root.iter("Topology"):
-        item = topo.find("DataItem")
-        if int(item.get("Dimensions").split()[0]) != int(topo.get("NumberOfElements")):
-            fail(f"Topology {item.text.strip()}: NumberOfElements {topo.get('NumberOfElements')} vs {item.get('Dimensions')}")
+    for root in roots.values():
+        for item in root.iter("DataItem"):
+            nitems += 1
+            fname, path = item.text.strip().split(":", 1)
+            if fname != "fields.h5":
+                fail(f"DataItem names file {fname}")
+                continue
+            if path not in h5:
+                fail(f"{path} is not in fields.h5")
+                continue
+            ds = h5[path]
+            dims = tuple(int(d) for d in item.get("Dimensions").split())
+            if ds.shape != dims:
+                fail(f"{path}: shape {ds.shape} in the file, {dims} in the xdmf")
+            kind = "i" if item.get("DataType") == "Int" else "f"
+            if ds.dtype.kind != kind or ds.dtype.itemsize != int(item.get("Precision")):
+                fail(f"{path}: dtype {ds.dtype}, xdmf says {item.get('DataType')} {item.get('Precision')}")
+        for topo in root.iter("Topology"):
+            item = topo.find("DataItem")
+            if topo.get("TopologyType") == "Mixed":  # a flat list: per cell its type code and nodes
+                types = h5["/shells/cell_type"][:, 0]
+                if len(types) != int(topo.get("NumberOfElements")) or int(item.get("Dimensions")) != int(np.sum(np.where(types == 4, 4, 5))):
+                    fail(f"Mixed topology: NumberOfElements {topo.get('NumberOfElements')}, Dimensions {item.get('Dimensions')}, for {len(types)} cells")
+            elif int(item.get("Dimensions").split()[0]) != int(topo.get("NumberOfElements")):
+                fail(f"Topology {item.text.strip()}: NumberOfElements {topo.get('NumberOfElements')} vs {item.get('Dimensions')}")
     print(f"check_fields: {nitems} DataItems match fields.h5")
 
-    temporal = root.find("Domain/Grid")
-    if temporal.get("GridType") != "Collection" or temporal.get("CollectionType") != "Temporal":
-        fail("the top grid is not a temporal collection")
-    steps = temporal.findall("Grid")
+    grids = {}
+    for name, root in roots.items():
+        temporal = root.find("Domain/Grid")
+        if temporal.get("GridType") != "Collection" or temporal.get("CollectionType") != "Temporal":
+            fail(f"{name}: the top grid is not a temporal collection")
+        grids[name] = temporal.findall("Grid")
+        if any(g.get("GridType") != "Uniform" for g in grids[name]):
+            fail(f"{name}: a step is not a uniform grid")
+    steps = grids["joints.xdmf"]
     times = [float(g.find("Time").get("Value")) for g in steps]
     loads = [float(g.find("Information[@Name='load']").get("Value")) for g in steps]
+    if "fields.xdmf" in grids and [float(g.find("Time").get("Value")) for g in grids["fields.xdmf"]] != times:
+        fail("fields.xdmf and joints.xdmf do not hold the same steps")
     if any(b <= a for a, b in zip(times, times[1:])):
         fail("times are not increasing")
 
@@ -136,33 +212,50 @@ def main():
         fail(f"joint line displacements differ from the jumps of joints.csv by {maxerr:g} (largest jump {scale:g})")
     print(f"check_fields: {len(steps)} steps, {njoints} joints; line endpoints vs jumps: max difference {maxerr:.3g} (largest jump {scale:.3g})")
 
-    # Shell elements: quadrilaterals and triangles, each block with its part ids.
-    blocks = []
-    for conn, part in (("/shells/quads", "/shells/part"), ("/shells/triangles", "/shells/triangle_part")):
-        if conn in h5:
-            blocks.append((h5[conn][:], h5[part][:, 0]))
+    # joints.csv as an HDF5 table (-output_joints_hdf5).
+    ntables = 0
+    for t in times:
+        g = h5[f"/steps/{int(t):06d}/joints"]
+        if "table" not in g:
+            continue
+        ntables += 1
+        byjoint = {int(q["joint"]): q for q in bystep.get(int(t), [])}
+        for row in g["table"][:]:
+            r = byjoint[int(row[0])]
+            ref = [STATES[r["state"]]] + [float(r[k]) for k in ("du_n", "du_t1", "du_t2", "f_n", "f_t1", "f_t2", "bearing", "slip_t1", "slip_t2")]
+            if np.abs(row[1:] - np.array(ref)).max() > 1e-12 * max(1.0, np.abs(ref).max()):
+                fail(f"step {int(t)} joint {int(row[0])}: table row {row[1:]} vs joints.csv {ref}")
+    if ntables:
+        print(f"check_fields: {ntables} steps' /joints/table equal joints.csv")
+
+    if "shells" in h5:
+        check_numbering(h5)
+        check_results(h5, times)
+
+    # --elements: the kinds of cell (/shells/cell_type, XDMF codes: 5 quadrilateral, 4 triangle)
+    # agree with the cells' node counts and with the xdmf topology (Quadrilateral, or Mixed as soon as
+    # there is a triangle, whose flat list /shells/topology is the cells' type and nodes in order),
+    # and every shell node is a node of some cell.
     if args.elements:
-        has = {"quad": "/shells/quads" in h5, "tri": "/shells/triangles" in h5}
+        types, cells = h5["/shells/cell_type"][:, 0], h5["/shells/cells"][:]
+        has = {"quad": bool((types == 5).any()), "tri": bool((types == 4).any())}
         want = {"quad": args.elements in ("quad", "mixed"), "tri": args.elements in ("tri", "mixed")}
         if has != want:
             fail(f"--elements {args.elements}: the file holds quadrilaterals {has['quad']}, triangles {has['tri']}")
-        grids = [g for g in root.iter("Grid") if g.find("Topology") is not None and g.find("Topology").get("TopologyType") == "Triangle"]
-        ntri = h5["/shells/triangles"].shape[0] if has["tri"] else 0
-        if len(grids) != (len(steps) if ntri else 0) or any(int(g.find("Topology").get("NumberOfElements")) != ntri for g in grids):
-            fail(f"--elements {args.elements}: {len(grids)} Triangle grids in the xdmf for {len(steps)} steps and {ntri} triangles")
-        x = h5["/shells/coordinates"][:]
-        used = np.zeros(len(x), bool)
-        owner = np.full(len(x), -1)
-        for conn, part in blocks:
-            used[conn.ravel()] = True
-            for e, p in zip(conn, part):
-                if (owner[e] >= 0).any() and (owner[e][owner[e] >= 0] != p).any():
-                    fail(f"an element of part {p} has nodes of another part")
-                    break
-                owner[e] = p
+        if not np.isin(types, (4, 5)).all() or ((types == 4) != (cells[:, 3] < 0)).any() or (cells[:, :3] < 0).any():
+            fail("/shells/cell_type disagrees with the node counts of /shells/cells")
+        kinds = {t.get("TopologyType") for t in roots["fields.xdmf"].iter("Topology")}
+        if kinds != {"Mixed" if has["tri"] else "Quadrilateral"}:
+            fail(f"--elements {args.elements}: xdmf topologies {kinds}")
+        if has["tri"]:
+            flat = np.concatenate([[t] + list(c[: 3 if t == 4 else 4]) for t, c in zip(types, cells)])
+            if "/shells/topology" not in h5 or not np.array_equal(h5["/shells/topology"][:], flat):
+                fail("/shells/topology is not the cells' type codes and nodes in order")
+        used = np.zeros(len(h5["/shells/coordinates"]), bool)
+        used[cells[cells >= 0]] = True
         if not used.all():
             fail(f"{(~used).sum()} shell nodes belong to no element")
-        print(f"check_fields: {sum(len(c) for c, _ in blocks)} elements ({ntri} triangles) over {len(x)} nodes, every node used")
+        print(f"check_fields: {len(types)} elements ({int((types == 4).sum())} triangles) over {len(used)} nodes, every node used, topology {kinds}")
 
     # Fixed dof.
     dofnames = ["ux", "uy", "uz", "rx", "ry", "rz"]
@@ -170,7 +263,7 @@ def main():
         part, axis, value, dofs = spec.split(",")
         dofs = list(range(6)) if dofs == "all" else [dofnames.index(d) for d in dofs.split(":")]
         x = h5["/shells/coordinates"][:]
-        nodes = np.unique(np.concatenate([conn[cellpart == int(part)].ravel() for conn, cellpart in blocks]))
+        nodes = np.flatnonzero(h5["/shells/node_part"][:, 0] == int(part))
         nodes = nodes[np.abs(x[nodes, "xyz".index(axis)] - float(value)) < 1e-9]
         if len(nodes) == 0:
             fail(f"--fixed {spec}: no node")
@@ -201,6 +294,23 @@ def main():
             if n in ref and ref[n].dtype.kind == "f" and ref[n].size:
                 q = n.split("/", 2)[-1] if n.startswith("steps/") else n
                 qscale[q] = max(qscale.get(q, 0.0), np.abs(ref[n][:]).max())
+        # A quantity the load leaves zero (the shear of a strip in pure bending, the force of a joint
+        # that carries none) holds round-off only: its scale is then the load's in its units, from
+        # the quantities of other units and h, the mean element size (membrane and shear forces
+        # N/mm, moments N mm/mm, joint forces N, translations mm, rotations rad).
+        if "shells/cells" in ref:
+            xyz, cells = ref["shells/coordinates"][:], ref["shells/cells"][:]
+            first = xyz[cells[:, 0]]
+            h = np.mean([np.linalg.norm(xyz[cells[:, 2]] - first, axis=1).mean(), 1e-300])
+            get = lambda *names: max([qscale.get(k, 0.0) for k in names] + [0.0])
+            per_length = max(get("shells/N", "shells/Q", "shells/N_element", "shells/Q_element"), get("shells/M", "shells/M_element") / h)
+            translation = max(get("shells/displacement", "joints/displacement", "joints/jump"), get("shells/rotation") * h)
+            floor = {"N": per_length, "Q": per_length, "N_element": per_length, "Q_element": per_length,
+                     "M": per_length * h, "M_element": per_length * h, "force": per_length * h, "in_plane_force": per_length * h,
+                     "displacement": translation, "jump": translation, "rotation": translation / h}
+            for q in qscale:
+                if q.split("/")[-1] in floor:
+                    qscale[q] = max(qscale[q], floor[q.split("/")[-1]])
         worst = 0.0
         for n in names:
             if n not in ref:

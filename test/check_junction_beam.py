@@ -77,7 +77,7 @@ def main():
     b, h = g["b"], g["depth"]
     pid = {r["part"]: int(r["id"]) for r in csv.DictReader(l for l in open(base + ".patches.csv") if not l.startswith("#"))}
     f = h5py.File(os.path.join(res, "fields.h5"), "r")
-    X, Q, qp = f["shells/coordinates"][:], f["shells/quads"][:], f["shells/part"][:, 0]
+    X, Q, qp = f["shells/coordinates"][:], f["shells/cells"][:], f["shells/part"][:, 0]
     step = sorted(f["steps"].keys())[-1]
     lam = float(f["steps"][step].attrs["load"])
     U = f[f"steps/{step}/shells/displacement"][:]

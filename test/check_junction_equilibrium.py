@@ -52,7 +52,7 @@ def main():
     table = {int(r["id"]): r for r in csv.DictReader(open(base + ".joints.csv"))}
     h5 = h5py.File(os.path.join(res, "fields.h5"), "r")
     X = h5["shells/coordinates"][:]
-    Q = h5["shells/quads"][:]
+    Q = h5["shells/cells"][:]  # quadrilaterals: the junction is meshed in them
     qpart = h5["shells/part"][:, 0]
     cent = X[Q].mean(axis=1)
 

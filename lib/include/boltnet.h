@@ -94,6 +94,25 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetJointResult(BoltnetAssembly, Petsc
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetPatchDisplacement(BoltnetAssembly, PetscInt patch, PetscReal u[6]);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetLoadFactor(BoltnetAssembly, PetscReal *);
 
+/* Element results at the last converged step (docs/output.md, "Stresses and section forces"): the
+   stress resultants of element `element` of shell patch `part` (numbers as the caller gave them),
+   at its centroid, in its element frame (x along its first natural axis, z its normal by the
+   counter-clockwise node order) or in the material frame (x along the material reference direction,
+   global X by default, projected on the element). N (Nxx Nyy Nxy, force per length), M (Mxx Myy
+   Mxy, moment per length), Q (Qxz Qyz); the strains of the top (z = +t/2) and bottom faces (eps_xx
+   eps_yy gamma_xy); for a homogeneous section (one material through the thickness) their stresses
+   (sigma_xx sigma_yy tau_xy) and von Mises stress; a laminate has NaN stresses (its ply stresses
+   are not computed). axes: the frame's x, y, z as rows (global). Collective. */
+typedef enum { BOLTNET_FRAME_ELEMENT = 0, BOLTNET_FRAME_MATERIAL = 1 } BoltnetFrame;
+typedef struct {
+  PetscReal axes[9];
+  PetscReal N[3], M[3], Q[2];
+  PetscReal strain_top[3], strain_bottom[3];
+  PetscBool homogeneous;
+  PetscReal stress_top[3], stress_bottom[3], von_mises_top, von_mises_bottom;
+} BoltnetElementResult;
+PETSC_EXTERN PetscErrorCode BoltnetAssemblyGetElementResult(BoltnetAssembly, PetscInt part, PetscInt element, BoltnetFrame, BoltnetElementResult *);
+
 /* The boltnet line search (-snes_linesearch_type boltnet) and the joint-state SNES monitor. */
 #define SNESLINESEARCHBOLTNET "boltnet"
 /* Joint-state callback a line search can use: the number of joints whose state at x differs from

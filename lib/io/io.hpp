@@ -38,17 +38,35 @@ std::vector<std::pair<std::string, std::string>> OptionsSplit(const std::string 
 // solve (before_solve true), the options PETSc reads only during or after a solve are not counted.
 PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], PetscBool before_solve, int *exitcode);
 
-// Fields (io/fields.cpp): fields.h5 and fields.xdmf under dir, one step at a time, by rank 0.
-struct FieldsFile {
-  std::string dir, scene;
-  PetscInt    nnodes = 0, nquads = 0, njoints = 0; // fixed by the first step
-  PetscInt    ntriangles = 0;                      // likewise (a block of their own)
-  std::vector<std::pair<PetscInt, PetscReal>> steps; // (step, load factor) written so far
-  PetscViewer viewer = nullptr;                      // fields.h5, open from the first step on
+// Fields (io/fields.cpp): fields.h5, fields.xdmf and joints.xdmf under dir, one step at a time,
+// written in parallel (each rank its own rows) through PETSc's HDF5 viewer (docs/output.md).
+struct FieldsOptions {
+  PetscBool fields  = PETSC_TRUE;  // -output_fields
+  PetscBool results = PETSC_TRUE;  // -output_stresses: element resultants, strains and stresses
+  PetscBool joints_hdf5 = PETSC_FALSE; // -output_joints_hdf5: the joints.csv table per step in fields.h5
+  PetscBool gather  = PETSC_FALSE; // -output_fields_gather: the writer that gathers to rank 0
+  PetscReal bypass_width = 0;      // -output_bypass_width (mm); 0: 6 -coupling_radius (3 diameters)
 };
-// Rank 0 only: the step's fields into fields.h5, then fields.xdmf rewritten for every step so far.
-PetscErrorCode FieldsWriteStep(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
+struct FieldsFile {
+  std::string   dir, scene;
+  FieldsOptions opt;
+  PetscInt      nnodes = 0, nquads = 0, njoints = 0;   // fixed by the first step
+  std::vector<std::pair<PetscInt, PetscReal>> steps;   // (step, load factor) written so far
+  PetscViewer   viewer = nullptr;                      // fields.h5, open from the first step on
+  FieldMap      map;                                   // the parallel writer's numbering
+  bool          mapped = false;
+  FILE         *bypass = nullptr;                      // bypass.csv (rank 0), with the element results
+};
+// Collective: the step's fields into fields.h5, then (rank 0) the xdmf files rewritten for every
+// step so far.
+PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo &info);
+// Rank 0 only: the same from the fields gathered to rank 0 (io/fields_gather.cpp).
+PetscErrorCode FieldsWriteStepGather(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
 PetscErrorCode FieldsClose(FieldsFile *ff);
+// Reads -output_fields, -output_stresses, -output_joints_hdf5, -output_bypass_width,
+// -output_fields_gather (inside the
+// caller's PetscOptionsBegin/End, so that -help lists them).
+PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o);
 // The group of fields.h5 that holds a step's fields ("/steps/000012"): a restart drops those after
 // its checkpoint (io/resume.cpp).
 std::string FieldsStepGroup(PetscInt step);
@@ -65,12 +83,12 @@ struct Output {
   PetscInt  most_joint = -1, most_step = 0;
   PetscReal most_force = -1, most_load = 0;
   std::string identified = "{}"; // joint types identified from geometry at start-up (Scene)
-  PetscBool   fields     = PETSC_FALSE; // write fields.h5 + fields.xdmf (OutputOpen decides)
+  PetscBool   fields     = PETSC_FALSE; // write the fields (OutputOpen decides)
   FieldsFile  ff;
 };
-// fields: -output_fields; the fields are written only when it is true and the assembly has a shell
-// patch (a rigid-only scene has no field to show).
-PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out);
+// The fields are written only when fields.fields is true and the assembly has a shell patch (a
+// rigid-only scene has no field to show).
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out);
 PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
 PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
 // Collective: rank 0's error closing joints.csv is every rank's.

@@ -2,6 +2,7 @@
 // (io/fields.cpp), written by rank 0.
 #include "io/io.hpp"
 #include "core/errors.hpp"
+#include "core/log.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -51,9 +52,33 @@ PetscErrorCode ShareError(MPI_Comm comm, const std::string &error)
   SETERRQ(comm, PETSC_ERR_FILE_WRITE, "%s", msg.c_str());
 }
 
+// The first failing rank's error (empty: none) becomes every rank's: a collective write that
+// failed on some ranks stops all of them with one message.
+PetscErrorCode ShareAnyError(MPI_Comm comm, const std::string &error)
+{
+  PetscMPIInt rank, size, first;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  const PetscMPIInt mine = error.empty() ? size : rank;
+  PetscCallMPI(MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, comm));
+  if (first == size) PetscFunctionReturn(0);
+  int len = (int)error.size();
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, first, comm));
+  std::string msg = error;
+  msg.resize((size_t)len);
+  PetscCallMPI(MPI_Bcast(msg.data(), len, MPI_CHAR, first, comm));
+  SETERRQ(comm, PETSC_ERR_FILE_WRITE, "%s", msg.c_str());
+}
+
 std::string Why(const std::string &path)
 {
   return "Cannot write " + path + ": " + std::strerror(errno);
+}
+
+std::string FieldsError(const Output *out, const StepInfo &info, const ErrorLog &log)
+{
+  return "Cannot write the fields of step " + std::to_string(info.step) + " in " + out->dir + "/fields.h5 or its xdmf files (-output_fields false turns them off): " + ErrorText(log);
 }
 
 } // namespace
@@ -78,7 +103,7 @@ std::string WriteFileWhole(const std::string &path, const std::string &text)
   return e;
 }
 
-PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out)
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out)
 {
   PetscMPIInt rank;
   int         ok = 1;
@@ -87,15 +112,26 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
-  out->fields   = (fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
+  out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
+  out->ff.opt   = fields;
+  if (out->fields && fields.gather) {
+    PetscInt tri = -1, any; // the id of a part with triangles
+    for (const auto &[index, sp] : a->layout.shells)
+      for (const MeshElement &e : sp.mesh.elems)
+        if (ElementNodes(e) == 3) tri = sp.id;
+    PetscCall(MPIU_Allreduce(&tri, &any, 1, MPIU_INT, MPI_MAX, comm));
+    PetscCheck(any < 0, comm, PETSC_ERR_SUP, "-output_fields_gather writes quadrilaterals only (the former writer, kept to measure against): part %" PetscInt_FMT " has triangles", any);
+  }
   if (rank == 0) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     // A summary left by an earlier run must not look like this run's result.
     std::filesystem::remove(dir + "/summary.json", ec);
     std::filesystem::remove(dir + "/fields.xdmf", ec);
+    std::filesystem::remove(dir + "/joints.xdmf", ec);
+    std::filesystem::remove(dir + "/bypass.csv", ec);
     std::filesystem::remove(dir + "/fields.h5", ec);
     out->csv = std::fopen((dir + "/joints.csv").c_str(), "w");
     ok       = out->csv ? 1 : 0;
@@ -114,7 +150,9 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
 {
   std::vector<JointRecord> rec;
   PetscFunctionBeginUser;
-  if (out->fields) {
+  // -log_view: the field output's time is BoltnetOutput (scripts/bench-output measures it).
+  PetscCall(PetscLogEventBegin(Events().output, 0, 0, 0, 0));
+  if (out->fields && out->ff.opt.gather) {
     std::vector<PartField> parts;
     std::vector<JointLine> lines;
     PetscErrorCode         ierr = 0;
@@ -123,12 +161,19 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
     if (a->rank == 0) { // rank 0 alone writes: its error is shared before anyone goes on
       ErrorLog log;
       PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
-      ierr = FieldsWriteStep(&out->ff, info, parts, lines);
+      ierr = FieldsWriteStepGather(&out->ff, info, parts, lines);
       PetscCall(PetscPopErrorHandler());
-      if (ierr) why = "Cannot write the fields of step " + std::to_string(info.step) + " in " + out->dir + "/fields.h5 or fields.xdmf (-output_fields false turns them off): " + ErrorText(log);
+      if (ierr) why = FieldsError(out, info, log);
     }
     PetscCall(ShareError(a->comm, why));
+  } else if (out->fields) { // every rank writes its rows; rank 0 the xdmf files
+    ErrorLog log;
+    PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
+    const PetscErrorCode ierr = FieldsWriteStep(a, &out->ff, info);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(ShareAnyError(a->comm, ierr ? FieldsError(out, info, log) : ""));
   }
+  PetscCall(PetscLogEventEnd(Events().output, 0, 0, 0, 0));
   PetscCall(AssemblyGatherRecords(a, rec));
   std::string why;
   for (const JointRecord &r : rec) { // rank 0 has the records, the others none
@@ -200,7 +245,7 @@ void OutputDiscard(Output *out)
 {
   if (out->csv) std::fclose(out->csv);
   out->csv = nullptr;
-  PetscViewerDestroy(&out->ff.viewer);
+  FieldsClose(&out->ff);
 }
 
 PetscErrorCode OutputClose(MPI_Comm comm, Output *out)

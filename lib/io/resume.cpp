@@ -1,6 +1,6 @@
-// The results of a run continued after a restart (io/checkpoint.hpp, OutputResume): joints.csv cut
-// after the checkpoint's step, fields.h5 reopened without the steps after it. Rank 0 checks both
-// before it changes either.
+// The results of a run continued after a restart (io/checkpoint.hpp, OutputResume): joints.csv and
+// bypass.csv cut after the checkpoint's step, fields.h5 reopened without the steps after it. Rank 0
+// checks them before any is changed; fields.h5, written by every rank, is then reopened by every rank.
 #include "core/errors.hpp"
 #include "io/checkpoint_file.hpp"
 
@@ -44,15 +44,37 @@ std::string JointsLength(const std::string &path, PetscInt k, size_t njoints, st
   return "";
 }
 
-// Rank 0: fields.h5 opened for writing, with step k in it, and the sizes of its model; the steps
-// after k are not yet dropped.
+// The length of bypass.csv up to the end of the rows of steps 1 to k (its rows are by step; a step
+// may have none: a fastener on no shell part), or why the file cannot be continued.
+std::string BypassLength(const std::string &path, PetscInt k, std::uintmax_t *length)
+{
+  std::ifstream  in(path, std::ios::binary);
+  std::string    line;
+  std::uintmax_t at = 0, end = 0;
+  PetscInt       last = 0;
+  if (!in || !std::getline(in, line) || in.eof() || line.rfind("step,", 0) != 0) return "Cannot restart: " + path + " does not start with the header of bypass.csv";
+  at = end = line.size() + 1;
+  while (std::getline(in, line)) {
+    if (in.eof()) break; // no newline: a row cut short
+    at += line.size() + 1;
+    const PetscInt step = (PetscInt)std::strtol(line.c_str(), nullptr, 10);
+    if (step > k) break;
+    if (step < last || step < 1) return "Cannot restart: " + path + " has rows out of step order";
+    last = step, end = at;
+  }
+  *length = end;
+  return "";
+}
+
+// Rank 0: fields.h5 opened (for writing with the former writer, which rank 0 alone writes; to read
+// otherwise), with step k in it, and the sizes of its model; the steps after k are not yet dropped.
 PetscErrorCode OpenFields(FieldsFile *ff, PetscInt k)
 {
   PetscBool has;
   PetscInt  bs, n;
   PetscFunctionBeginUser;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // HDF5's own error stack: the message says it
-  PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/fields.h5").c_str(), FILE_MODE_APPEND, &ff->viewer));
+  PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/fields.h5").c_str(), ff->opt.gather ? FILE_MODE_APPEND : FILE_MODE_READ, &ff->viewer));
   PetscCall(PetscViewerHDF5HasGroup(ff->viewer, FieldsStepGroup(k).c_str(), &has));
   PetscCheck(has, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "it holds no step %" PetscInt_FMT, k);
   PetscCall(PetscViewerHDF5PushGroup(ff->viewer, "/joints"));
@@ -65,13 +87,14 @@ PetscErrorCode OpenFields(FieldsFile *ff, PetscInt k)
     PetscCall(PetscViewerHDF5ReadSizes(ff->viewer, "coordinates", &bs, &n));
     ff->nnodes = n / 3;
     PetscCall(PetscViewerHDF5ReadSizes(ff->viewer, "part", &bs, &n));
-    ff->nquads = n / bs;
+    ff->nquads = n / bs; // the former writer's quadrilaterals; every element with the parallel one
     PetscCall(PetscViewerHDF5PopGroup(ff->viewer));
   }
   PetscFunctionReturn(0);
 }
 
-// Rank 0: the steps after k out of fields.h5 (a killed run may have written some).
+// The steps after k out of fields.h5 (a killed run may have written some): by every rank that has
+// the file open (HDF5 changes a file's structure in collective calls).
 PetscErrorCode DropLaterFields(FieldsFile *ff, PetscInt k)
 {
   hid_t     file;
@@ -98,23 +121,36 @@ std::string Resume(BoltnetAssembly a, Output *out)
   ErrorLog log;
   if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
   if (out->fields && OpenFields(&out->ff, k)) why = "Cannot continue the fields in " + out->dir + "/fields.h5: " + ErrorText(log) + " (-output_fields false restarts without fields)";
-  if (why.empty() && out->fields && DropLaterFields(&out->ff, k)) why = "Cannot remove the steps after step " + std::to_string(k) + " from " + out->dir + "/fields.h5: " + ErrorText(log);
-  if (!why.empty()) PetscViewerDestroy(&out->ff.viewer); // a viewer whose file did not open fails to close too: not the error to report
+  if (why.empty() && out->fields && out->ff.opt.gather && DropLaterFields(&out->ff, k)) why = "Cannot remove the steps after step " + std::to_string(k) + " from " + out->dir + "/fields.h5: " + ErrorText(log);
+  if (!why.empty() || !out->ff.opt.gather) PetscViewerDestroy(&out->ff.viewer); // a viewer whose file did not open fails to close too: not the error to report
   PetscPopErrorHandler();
   if (!why.empty()) return why;
-  for (const StepInfo &s : a->steps) out->ff.steps.emplace_back(s.step, s.load);
-  std::error_code ec;
+  // bypass.csv (the element results' companion) goes on after step k, if the run wrote one.
+  const std::string bypass = out->dir + "/bypass.csv";
+  std::uintmax_t    bkeep  = 0;
+  std::error_code   ec;
+  const bool        withBypass = out->fields && out->ff.opt.results && !out->ff.opt.gather && std::filesystem::exists(bypass, ec);
+  if (withBypass) {
+    why = BypassLength(bypass, k, &bkeep);
+    if (!why.empty()) return why;
+  }
   std::filesystem::remove(out->dir + "/summary.json", ec); // this run writes its own at the end
   std::filesystem::resize_file(csv, keep, ec);
   if (ec) return "Cannot restart: cannot cut " + csv + " after step " + std::to_string(k) + ": " + ec.message();
   out->csv = std::fopen(csv.c_str(), "a");
   if (!out->csv) return "Cannot restart: cannot append to " + csv;
+  if (withBypass) {
+    std::filesystem::resize_file(bypass, bkeep, ec);
+    if (ec) return "Cannot restart: cannot cut " + bypass + " after step " + std::to_string(k) + ": " + ec.message();
+    out->ff.bypass = std::fopen(bypass.c_str(), "a");
+    if (!out->ff.bypass) return "Cannot restart: cannot append to " + bypass;
+  }
   return "";
 }
 
 } // namespace
 
-PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, PetscBool fields, BoltnetAssembly a, Output *out)
+PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out)
 {
   PetscMPIInt rank;
   std::string why;
@@ -123,9 +159,10 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
-  out->fields   = (fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
+  out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
+  out->ff.opt   = fields;
   if (rank == 0) {
     try {
       why = Resume(a, out);
@@ -140,6 +177,14 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
   }
   PetscCall(ckpt::ShareText(comm, &why));
   PetscCheck(why.empty(), comm, PETSC_ERR_FILE_UNEXPECTED, "%s", why.c_str());
+  // Every rank: the steps written (the next step writes no mesh), and fields.h5, which rank 0 found
+  // holding step k, opened by all for the parallel writer.
+  for (const StepInfo &s : a->steps) out->ff.steps.emplace_back(s.step, s.load);
+  if (out->fields && !out->ff.opt.gather) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    PetscCall(PetscViewerHDF5Open(comm, (dir + "/fields.h5").c_str(), FILE_MODE_APPEND, &out->ff.viewer));
+    PetscCall(DropLaterFields(&out->ff, (PetscInt)a->steps.size()));
+  }
   PetscFunctionReturn(0);
 }
 

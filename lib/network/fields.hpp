@@ -1,37 +1,135 @@
-// The displacement field of the assembly gathered to rank 0 for output (io/fields.cpp writes it).
+// The results of the assembly in the file's numbering, computed where they live (docs/output.md).
 // This is the one place where the field output reads the network's internals (network/fields.cpp):
-// how parts map to vertices and where their dof sit in X.
+// how parts map to patches and vertices, where their dof sit in X, which rank holds what.
+//
+// The file's (natural) numbering: shell parts by increasing id; within a part its nodes and its
+// elements in the user's own numbering, whatever patches the part was cut into and whatever rank
+// holds them; joints in the order of the model's joint list. Natural node n of part p is
+// node_off[p] + (its number in the part); every rank computes that for the nodes of its own patches
+// from part-wise counts (one MPI_Allreduce), so no rank ever holds the whole field: each rank
+// computes what it owns, and a VecScatter per block size puts owned values in natural order, each
+// rank holding a contiguous piece of as many rows as it owns.
 #pragma once
 
 #include "network/assembly.hpp"
+#include "shell/resultants.hpp"
 
 #include <array>
+#include <map>
 #include <vector>
 
 namespace boltnet {
 
-// One shell part as the user described it, whatever patches (network vertices) it was cut into.
-struct PartField {
-  PetscInt                           id; // user patch id
-  std::vector<std::array<double, 3>> x;     // reference node coordinates (mm)
-  std::vector<std::array<int, 4>>    elems; // node numbers within the part (a triangle's fourth: -1)
-  std::vector<double>                dof;   // 6 per node: ux uy uz rx ry rz (mm, rad)
+// Items (nodes, elements or joints) this rank owns and their natural numbers.
+struct FieldSpace {
+  PetscInt                       nlocal = 0, nglobal = 0, start = 0; // start: exclusive scan of nlocal
+  std::vector<PetscInt>          natural;                            // by owned item
+  std::map<PetscInt, VecScatter> scatter;                            // owned -> natural, by block size
+  std::map<PetscInt, std::array<Vec, 2>> vecs;                       // (owned, natural), by block size
 };
 
-// One joint as a line between its attachment points on its two patches.
+// An element this rank writes (network/fields.cpp ElementsOf: the only code that enumerates them).
+// XDMF cell type codes: 5 quadrilateral (nn = 4), 4 triangle (nn = 3).
+struct FieldElement {
+  PetscInt              part;    // user id
+  PetscInt              elem;    // number in the part
+  PetscInt              owned;   // position in a->patches.owned of the patch that writes it
+  int                   type, nn;
+  std::array<PetscInt, 4> node;  // natural node numbers
+  std::array<int, 4>    local;   // the patch's own node number, or -1 (a node of another patch)
+  ElementGeometry       geom;    // nodes and directors as the stiffness has them (patch/operator.cpp)
+};
+
+struct FieldMap {
+  std::vector<PetscInt>              part_ids;         // shell parts, increasing
+  std::map<PetscInt, PetscInt>       node_off, elem_off; // by part id
+  FieldSpace                         nodes, elems, joints;
+  PetscInt                           ntriangles = 0;   // over all ranks: the rest are quadrilaterals
+  std::vector<std::array<PetscInt, 2>> node_src;       // by owned node: (position in owned patches, patch node)
+  std::vector<FieldElement>          elements;         // by owned element
+  std::vector<PetscInt>              ghosts;           // natural numbers of the other patches' nodes
+  std::map<PetscInt, PetscInt>       ghost_index;      //   and their positions
+  VecScatter                         ghost_scatter = nullptr; // natural (block 6) -> ghosts
+  Vec                                ghost_dof = nullptr;     // 6 per ghost node
+  // Bypass (network/fields_bypass.cpp): (owned element, slot 2 joint index + side) of each element
+  // in the averaging region of a joint's side, and the scatter of the sums to the joints' ranks.
+  double                               bypass_width = 0;
+  std::vector<std::array<PetscInt, 2>> bypass_members;
+  VecScatter                           bypass_scatter = nullptr;
+  Vec                                  bypass_sums = nullptr, bypass_local = nullptr;
+};
+
+// Collective. The map of the assembly's shell output (nothing to write when part_ids is empty).
+PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m);
+PetscErrorCode FieldMapDestroy(FieldMap *m);
+
+// Columns [first, first + bs) of a natural Vec of block size K (from FieldSpaceNatural) as a natural
+// Vec of block size bs, also borrowed from s (K == bs: packed itself). Collective only the first
+// time a block size is asked for: several datasets of one space travel in one scatter, side by side.
+PetscErrorCode FieldSpaceColumns(FieldSpace &s, Vec packed, PetscInt K, PetscInt first, PetscInt bs, Vec *out);
+
+// Collective: a natural-order Vec (block size bs, as many rows as the rank owns) holding `owned`
+// (bs values per owned item of s, in owned order). Borrowed: it belongs to s and is overwritten by
+// the next call with the same block size (kept, so that a step creates no Vec: every creation is
+// a collective layout set-up).
+PetscErrorCode FieldSpaceNatural(MPI_Comm comm, FieldSpace &s, PetscInt bs, const std::vector<double> &owned, Vec *natural);
+
+// A joint as a line between its attachment points on its two patches.
 struct JointLine {
   PetscInt              id;     // user joint id
   PetscInt              state;  // State at the last converged step (what the joint did in it)
+  PetscInt              bearing;
   std::array<double, 3> xa, xb; // reference attachment points: a rigid patch's node; on a shell
                                 // patch, the point of the bolt axis on the footprint's mid-surface
   std::array<double, 6> ua, ub; // dof of the joint's nodes on patches a and b (global frame)
   std::array<double, 9> R;      // local frame rows (n, t1, t2)
   std::array<double, 6> jump;   // local jump and force (as in joints.csv)
   std::array<double, 6> force;
+  std::array<double, 2> slip;
 };
 
-// Collective on a->comm. On rank 0: every shell part (sorted by patch id) and every joint (sorted
-// by joint id) at the last converged point a->X; empty elsewhere.
+// One converged step, in owned order (dof: 6 per owned node; results per owned element, in the
+// element frame; lines per owned joint, in the order of the rank's JointSet).
+struct StepFields {
+  std::vector<double>                dof; // 6 per owned node: ux uy uz rx ry rz
+  Vec                                dof_natural = nullptr; // set when computed (borrowed from the map)
+  std::vector<shell::SectionResults> results;
+  std::vector<JointLine>             lines;
+};
+// Collective: the last converged point a->X. With results false, no element results.
+PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, StepFields *f);
+
+// The bypass load beside each fastener (docs/output.md, "Bypass"), one row per joint side on a shell
+// part, for the joints this rank owns.
+struct BypassRow {
+  PetscInt joint, side, part, elements; // side 0: patch a, 1: patch b; elements averaged
+  double   bearing;                     // |in-plane force of the fastener on the sheet| (N)
+  double   d[3];                        // its direction (global), t1 when it is zero
+  double   n_avg, width, flux, load;    // d.N.d averaged (N/mm), w (mm), bypass flux (N/mm), flux w (N)
+};
+// Collective. The averaging regions (once, width w in mm) and each step's rows from f's results.
+PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width);
+PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &f, std::vector<BypassRow> &rows);
+
+// The material frame of an owned element (the section law's, resultants.hpp).
+const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e);
+// The results at the centroid of a quadrilateral or triangle (u: 6 dof per node, a triangle's in
+// the first 18), with the directors and drilling factor of its stiffness.
+shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u);
+// The element frame's axes e1, e2, e3 (shell::MakeElementFrame) and the element's area.
+std::array<shell::Vec3, 3> ElementAxesOf(const ElementGeometry &g);
+double                     ElementArea(const ElementGeometry &g);
+
+// --- The gather-to-rank-0 writer, kept to measure against (network/fields_gather.cpp). ---
+struct PartField {
+  PetscInt                           id;
+  std::vector<std::array<double, 3>> x;
+  std::vector<std::array<int, 4>>    elems; // a triangle's fourth node: -1
+  std::vector<double>                dof; // 6 per node
+};
+// On rank 0: every shell part and every joint (sorted by id); empty elsewhere.
 PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &parts, std::vector<JointLine> &lines);
+// The reference attachment point of joint j on the patch at position pos (node: its node there).
+std::array<double, 3> JointAttachmentPoint(BoltnetAssembly a, const JointComp &j, PetscInt pos, PetscInt node);
 
 } // namespace boltnet

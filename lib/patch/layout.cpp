@@ -185,21 +185,23 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     nodemap[v] = {first + cut.patch[v], local[v]};
   }
   std::map<std::pair<int, int>, Seam> seams;
-  for (const MeshElement &q : part.mesh.elems) {
-    const int     nn = ElementNodes(q);
+  for (int e = 0; e < (int)part.mesh.elems.size(); ++e) {
+    const MeshElement &q  = part.mesh.elems[e];
+    const int          nn = ElementNodes(q);
     std::set<int> in;
     for (int k = 0; k < nn; ++k) in.insert(cut.patch[q[k]]);
     if (in.size() == 1) {
-      MeshElement e = {-1, -1, -1, -1};
-      for (int k = 0; k < nn; ++k) e[k] = local[q[k]];
-      subs[*in.begin()].mesh.elems.push_back(e);
+      MeshElement own = {-1, -1, -1, -1};
+      for (int k = 0; k < nn; ++k) own[k] = local[q[k]];
+      subs[*in.begin()].mesh.elems.push_back(own);
+      subs[*in.begin()].part_elem.push_back(e);
       continue;
     }
     // The geometry and directors of the whole part: a shared element is the same element in every
     // patch and seam that adds a share of it.
     const ElementGeometry geom = GeometryOf(part.mesh, q);
     for (int s : in) {
-      ShellPatch::SharedElement el{geom, {-1, -1, -1, -1}};
+      ShellPatch::SharedElement el{geom, {-1, -1, -1, -1}, e, q};
       for (int k = 0; k < nn; ++k) el.node[k] = cut.patch[q[k]] == s ? local[q[k]] : -1;
       subs[s].shared.push_back(el);
     }

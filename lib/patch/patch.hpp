@@ -46,6 +46,8 @@ struct ShellPatch {
   struct SharedElement {
     ElementGeometry    geom;
     std::array<int, 4> node;
+    int                elem = -1;    // its number in the part (for output, network/fields.cpp)
+    std::array<int, 4> part_node{}; // its nodes' numbers in the part
   };
   std::vector<SharedElement> shared;
   // Joint nodes: node mesh.x.size() + k is the k-th joint attached to this patch.
@@ -59,6 +61,8 @@ struct ShellPatch {
   std::map<std::string, PetscInt> part_set_size;
   // Number in the whole part of each mesh node of this patch (empty: the patch is the whole part).
   std::vector<int> part_node;
+  // Number in the whole part of each element of mesh.elems (empty: the patch is the whole part).
+  std::vector<int> part_elem;
   // The nodes the network vertex carries, in order: every node (mesh, then joint nodes) when the
   // patch is kept whole, its ports (the joint nodes and the nodes a seam touches) when condensed.
   std::vector<int> carried;

@@ -4,4 +4,5 @@
 target_sources(boltnet PRIVATE
   ${CMAKE_CURRENT_LIST_DIR}/material.cpp
   ${CMAKE_CURRENT_LIST_DIR}/element.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/triangle.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/triangle.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/resultants.cpp)

@@ -1,0 +1,57 @@
+# Results engineers read (docs/output.md): element results against closed forms through the API,
+# the files opened by meshio, fields written in parallel equal to one rank's.
+
+# Resultants and surface stresses of a strip in tension, pure bending and as a cantilever, against
+# their closed forms, in the element and the material frame, at 1, 2 and 3 ranks (the strip is cut
+# into patches on several ranks: elements on the cut read the other patch's nodes).
+add_executable(test_element_results test_element_results.c)
+target_link_libraries(test_element_results PRIVATE boltnet m)
+foreach(ranks 1 2 3)
+  boltnet_expect(element_results ${ranks} --match "test_element_results: PASS" --
+    ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:test_element_results> -options_left)
+endforeach()
+
+# The element results in fields.h5 against the cantilever strip's closed forms (N, M linear in x, Q,
+# surface stresses) at 1, 2 and 3 ranks; on 2 and 3 ranks every dataset equals the 1-rank file
+# (1e-9 of its scale): the parallel writer puts each rank's rows where one rank would.
+foreach(ranks 1 2 3)
+  boltnet_run(strip_cantilever ${ranks} ${BOLTNET_TEST_SCENES}/strip-cantilever.yaml)
+  add_test(NAME strip_cantilever_stresses_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_stresses.py ${BOLTNET_OUT}/strip_cantilever_np${ranks}
+            --length 150 --width 20 --thickness 2 --fz 1000 --fx 2000)
+  set_tests_properties(strip_cantilever_stresses_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_cantilever_np${ranks})
+endforeach()
+foreach(ranks 2 3)
+  add_test(NAME strip_cantilever_fields_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fields.py ${BOLTNET_OUT}/strip_cantilever_np${ranks}
+            ${BOLTNET_TEST_SCENES}/strip-cantilever.joints.csv --fixed 0,x,0,all --ref ${BOLTNET_OUT}/strip_cantilever_np1 --rtol 1e-9)
+  set_tests_properties(strip_cantilever_fields_np${ranks} PROPERTIES FIXTURES_REQUIRED "strip_cantilever_np1;strip_cantilever_np${ranks}")
+endforeach()
+
+# fig3a written by 3 ranks equals 1 rank's (as fig3a_fields_np2 for 2), and meshio reads it.
+add_test(NAME fig3a_fields_np3
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fields.py ${BOLTNET_OUT}/fig3a_np3 ${BOLTNET_SCENES}/fig3a.joints.csv ${_fig3a_fixed}
+          --ref ${BOLTNET_OUT}/fig3a_np1 --rtol 1e-8)
+set_tests_properties(fig3a_fields_np3 PROPERTIES FIXTURES_REQUIRED "fig3a_np1;fig3a_np3")
+add_test(NAME fig3a_meshio_np2 COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_meshio.py ${BOLTNET_OUT}/fig3a_np2)
+set_tests_properties(fig3a_meshio_np2 PROPERTIES FIXTURES_REQUIRED fig3a_np2)
+
+# A scene name with every character XML escapes (and a tab, which an attribute value keeps only as a
+# character reference) still gives valid xdmf files, which meshio and the checker read; with
+# -output_joints_hdf5 each step's /joints/table equals joints.csv. lap-rows on 2 ranks: eight shell
+# parts and their joints.
+boltnet_run(odd_name 2 ${BOLTNET_SCENES}/lap-rows.yaml -load_steps 3 -output_joints_hdf5 -scene_name "a<b>&c\"d'e\tf")
+add_test(NAME odd_name_fields COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fields.py ${BOLTNET_OUT}/odd_name_np2 ${BOLTNET_SCENES}/lap-rows.joints.csv)
+add_test(NAME odd_name_meshio COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_meshio.py ${BOLTNET_OUT}/odd_name_np2)
+set_tests_properties(odd_name_fields odd_name_meshio PROPERTIES FIXTURES_REQUIRED odd_name_np2)
+
+# Bypass (bypass.csv): a fastener that carries nothing in a strip in uniform tension passes the whole
+# running load (closed form, 1 and 2 ranks); lap-rows' bearing loads are joints.csv's forces, the
+# rows follow the force balance, and 2 ranks write what 1 rank writes.
+foreach(ranks 1 2)
+  boltnet_run(strip_bypass ${ranks} ${BOLTNET_TEST_SCENES}/strip-bypass.yaml -output_bypass_width 30)
+  add_test(NAME strip_bypass_np${ranks} COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/strip_bypass_np${ranks} --uniform 144)
+  set_tests_properties(strip_bypass_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_bypass_np${ranks})
+endforeach()
+add_test(NAME lap_rows_bypass COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_np2 --ref ${BOLTNET_OUT}/lap_rows_np1)
+set_tests_properties(lap_rows_bypass PROPERTIES FIXTURES_REQUIRED "lap_rows_np1;lap_rows_np2")
