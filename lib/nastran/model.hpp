@@ -1,0 +1,68 @@
+// A deck and one of its subcases turned into what boltnet's model describes (docs/nastran.md,
+// "From a deck to a model"): one shell part per shell property, joints from CBUSH and CFAST,
+// fixed dofs from SPC/SPC1/GRID PS and nodal loads from FORCE, MOMENT and PLOAD4. Pure C++: no
+// PETSc; throws nastran::Error naming the card (or the subcase) for what boltnet cannot represent.
+// lib/io/nastran.cpp puts the result into an assembly.
+#pragma once
+
+#include "mesh/mesh.hpp"
+#include "nastran/deck.hpp"
+#include "nastran/expand.hpp"
+#include "shell/shell.hpp"
+
+#include <string>
+#include <vector>
+
+namespace boltnet::nastran {
+
+// A shell part: the elements of one PSHELL or PCOMP. grids[i] is the deck grid index of mesh node i.
+struct ModelPart {
+  int                  pid = 0;
+  ShellMesh            mesh;
+  shell::ShellMaterial material;
+  std::vector<int>     grids;
+};
+
+// A CBUSH or CFAST between two parts (positions in DeckModel::parts), with the spring stiffnesses
+// of docs/joint-laws.md that its PBUSH/PFAST gives (K projected on the joint frame, "Joints").
+struct ModelJoint {
+  int    eid = 0, pid = 0;
+  bool   fast = false; // CFAST (else CBUSH)
+  int    part_a = -1, part_b = -1;
+  Vec3   x{}, n{}, t1{};
+  double kn = 0, kt = 0, kr = 0;
+};
+
+enum class ModelBCKind { Fixed, Displacement, Force };
+// A condition on one dof (0..5, basic axes) of a node set of a part: value is the set's total force
+// (Force) or the enforced displacement (Displacement); nodes are mesh node indices.
+struct ModelBC {
+  int              part = -1;
+  std::string      set;
+  std::vector<int> nodes;
+  int              dof = 0;
+  ModelBCKind      kind = ModelBCKind::Fixed;
+  double           value = 0;
+};
+
+struct DeckModel {
+  int                     subcase = 1;
+  std::vector<ModelPart>  parts;  // by increasing property id
+  std::vector<ModelJoint> joints; // CBUSH then CFAST, each by increasing element id
+  std::vector<ModelBC>    bcs;
+  std::vector<std::string> notes; // what the model assumed (stiffness averaged, grids skipped, ...)
+};
+
+// The subcase with id `id` (throws naming the ids the deck has).
+const Subcase &FindSubcase(const Deck &deck, int id);
+
+// The model of subcase `subcase`. Throws nastran::Error for cards boltnet does not model (RBE2,
+// RBE3, grounded CBUSH), a grid shared by two shell properties, a bush or fastener grid on no shell.
+DeckModel ModelOf(const Deck &deck, int subcase);
+
+// PLOAD4 pressures as consistent nodal forces (2 x 2 Gauss points on the bilinear quadrilateral,
+// 3 midside points on the triangle: exact for the load's resultant and moment), summed per grid
+// into `nodal` (sorted by grid index on return).
+void PressuresToNodal(const Deck &deck, const std::vector<ShellPressure> &pressures, std::vector<NodalLoad> &nodal);
+
+} // namespace boltnet::nastran
