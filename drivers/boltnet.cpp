@@ -53,9 +53,10 @@ struct Release {
 
 // What one run solves: the scene's tables, or one subcase of a Nastran deck.
 struct Source {
-  const nastran::Deck *deck = nullptr;
-  PetscInt             subcase = 0;
-  std::string          fasteners;
+  const nastran::Deck  *deck = nullptr;
+  PetscInt              subcase = 0;
+  nastran::ModelOptions options;
+  std::string           fasteners;
 };
 
 struct DriverOptions {
@@ -76,7 +77,7 @@ PetscErrorCode RunOne(const Source &src, Scene &scene, const DriverOptions &o, c
   PetscFunctionBeginUser;
   // Everything is read and checked before anything is written.
   PetscCall(BoltnetAssemblyCreate(comm, &a));
-  if (src.deck) PetscCall(SceneDescribeNastran(comm, &scene, *src.deck, src.subcase, src.fasteners, a));
+  if (src.deck) PetscCall(SceneDescribeNastran(comm, &scene, *src.deck, src.subcase, src.options, src.fasteners, a));
   else PetscCall(SceneDescribeAssembly(comm, &scene, a));
   PetscCall(LoadPathFromOptions(comm, nullptr, &path));
   {
@@ -154,6 +155,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   char          deckfile[PETSC_MAX_PATH_LEN] = "", fasteners[PETSC_MAX_PATH_LEN] = "";
   PetscBool     hasScene, hasDeck;
   PetscInt      subcase = 0;
+  PetscReal     tie_penalty = nastran::ModelOptions{}.tie_penalty;
   DriverOptions o;
   Scene         scene;
   PetscFunctionBeginUser;
@@ -182,7 +184,9 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsString("-nastran_deck", "Nastran bulk data deck to run instead of the scene's tables: shell properties become parts, CBUSH/CFAST joints, SPC fixed dof, FORCE/MOMENT/PLOAD4 loads (docs/nastran.md)", "", deckfile, deckfile, sizeof(deckfile), &hasDeck));
   PetscCall(PetscOptionsInt("-nastran_subcase", "Subcase of the deck to run (0: every subcase, each into <output_dir>/subcase-<id>)", "", subcase, &subcase, nullptr));
   PetscCall(PetscOptionsString("-nastran_fasteners", "CSV fastener table turning chosen CBUSH/CFAST into joint types: type and first[,last] (element ids) or pid (PBUSH/PFAST id); the others keep their PBUSH/PFAST spring", "", fasteners, fasteners, sizeof(fasteners), nullptr));
+  PetscCall(PetscOptionsReal("-nastran_tie_penalty", "Stiffness of the ties that stand for a grid shared by two shell properties and for RBE2: kn = kt = this x the largest membrane stiffness A11 of the deck's shells, kr = this x the largest D11", "", tie_penalty, &tie_penalty, nullptr));
   PetscOptionsEnd();
+  PetscCheck(tie_penalty > 0, comm, PETSC_ERR_USER_INPUT, "-nastran_tie_penalty %g must be > 0", (double)tie_penalty);
   PetscCall(SceneCheckOptionValues(comm));
   if (!hasScene && !hasDeck && o.helpOnly) { // list the options that do not depend on a scene
     LoadPath        path;
@@ -220,7 +224,8 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     if (!coupling) PetscCall(PetscOptionsSetValue(nullptr, "-coupling_type", "node"));
     const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
     for (PetscInt id : ids) {
-      const Source src{&deck, id, fastpath};
+      Source src{&deck, id, {}, fastpath};
+      src.options.tie_penalty = tie_penalty;
       PetscCall(RunOne(src, scene, o, dir + "/subcase-" + std::to_string(id), exitcode, log));
       if (*exitcode || o.helpOnly) break;
     }

@@ -2,7 +2,7 @@
 #pragma once
 #include "network/assembly.hpp"
 #include "network/fields.hpp"
-#include "nastran/deck.hpp"
+#include "nastran/model.hpp"
 
 #include <set>
 #include <string>
@@ -31,7 +31,7 @@ PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::strin
 // model of one subcase described into the assembly, with the fastener table (CSV: type and first
 // [, last] or pid; "" for none) turning chosen CBUSH/CFAST into joints of a type.
 PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, PetscInt chosen, std::vector<PetscInt> *ids);
-PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const std::string &fasteners, BoltnetAssembly a);
+PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a);
 // Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
 // a misspelled boltnet option stops the run before it starts.
 PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);

@@ -85,26 +85,27 @@ PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, Pe
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const std::string &fasteners, BoltnetAssembly a)
+PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a)
 {
   nastran::DeckModel        m;
   std::vector<FastenerRule> rules;
   PetscFunctionBeginUser;
-  PetscCall(Input(comm, [&] { m = nastran::ModelOf(deck, (int)subcase); }));
+  PetscCall(Input(comm, [&] { m = nastran::ModelOf(deck, (int)subcase, options); }));
   for (const std::string &n : m.notes) PetscCall(PetscPrintf(comm, "boltnet: nastran: %s\n", n.c_str()));
   if (!fasteners.empty()) PetscCall(ReadFastenerTable(comm, fasteners, &rules));
 
   for (nastran::ModelPart &p : m.parts) {
-    PetscCall(AssemblyAddShell(a, p.pid, std::move(p.mesh), p.material));
+    if (p.rigid) PetscCall(BoltnetAssemblyAddRigidPatch(a, p.pid, p.x.data()));
+    else PetscCall(AssemblyAddShell(a, p.pid, std::move(p.mesh), p.material));
   }
   // Joints keep their PBUSH/PFAST spring unless the first matching row of the fastener table names
-  // a joint type, whose options (-joint_<type>_*) then give every parameter.
+  // a joint type, whose options (-joint_<type>_*) then give every parameter. Ties (pid 0) keep theirs.
   std::map<std::string, BoltnetJointParams> types;
   for (const nastran::ModelJoint &j : m.joints) {
     const PetscInt pa = m.parts[j.part_a].pid, pb = m.parts[j.part_b].pid;
     FastenerRule  *rule = nullptr;
     for (FastenerRule &r : rules)
-      if ((r.pid >= 0 && r.pid == j.pid) || (r.first >= 0 && j.eid >= r.first && j.eid <= r.last)) {
+      if (j.pid != 0 && ((r.pid >= 0 && r.pid == j.pid) || (r.first >= 0 && j.eid >= r.first && j.eid <= r.last))) {
         rule = &r;
         break;
       }
@@ -127,13 +128,15 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
   const BoltnetBCKind kinds[] = {BOLTNET_BC_FIXED, BOLTNET_BC_DISPLACEMENT, BOLTNET_BC_FORCE};
   for (const nastran::ModelBC &b : m.bcs) {
     const PetscInt pid = m.parts[b.part].pid;
-    if (made.insert({pid, b.set}).second) {
+    if (!b.set.empty() && made.insert({pid, b.set}).second) {
       std::vector<PetscInt> nodes(b.nodes.begin(), b.nodes.end());
       PetscCall(BoltnetAssemblyAddNodeSet(a, pid, b.set.c_str(), (PetscInt)nodes.size(), nodes.data()));
     }
     PetscCall(BoltnetAssemblyAddBCOnSet(a, pid, b.set.c_str(), b.dof, kinds[(int)b.kind], b.value));
   }
-  PetscCall(PetscPrintf(comm, "boltnet: nastran subcase %" PetscInt_FMT ": %zu shell parts (properties), %zu joints, %zu conditions\n", subcase, m.parts.size(), m.joints.size(), m.bcs.size()));
+  size_t nrigid = 0;
+  for (const nastran::ModelPart &p : m.parts) nrigid += p.rigid;
+  PetscCall(PetscPrintf(comm, "boltnet: nastran subcase %" PetscInt_FMT ": %zu shell parts (properties), %zu rigid parts (grids), %zu joints, %zu conditions\n", subcase, m.parts.size() - nrigid, nrigid, m.joints.size(), m.bcs.size()));
   PetscFunctionReturn(0);
 }
 

@@ -138,19 +138,20 @@ void PressuresToNodal(const Deck &d, const std::vector<ShellPressure> &pressures
   for (auto &[node, l] : by) nodal.push_back(l);
 }
 
-DeckModel ModelOf(const Deck &d, int subcase_id)
+DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
 {
   const Subcase &sc = FindSubcase(d, subcase_id);
   DeckModel      m;
   m.subcase = sc.id;
-  // Cards whose meaning boltnet's model cannot hold yet: refused, never dropped.
-  if (!d.rbe2s.empty()) Fail(d, d.rbe2s[0].src, "RBE2", "RBE2 " + std::to_string(d.rbe2s[0].id) + ": the deck has " + std::to_string(d.rbe2s.size()) + " RBE2 card(s); rigid elements are not turned into a boltnet model (docs/nastran.md, \"From a deck to a model\")");
-  if (!d.rbe3s.empty()) Fail(d, d.rbe3s[0].src, "RBE3", "RBE3 " + std::to_string(d.rbe3s[0].id) + ": the deck has " + std::to_string(d.rbe3s.size()) + " RBE3 card(s); rigid elements are not turned into a boltnet model (docs/nastran.md, \"From a deck to a model\")");
+  // Cards whose meaning boltnet's model cannot hold: refused, never dropped.
+  if (!d.rbe3s.empty()) Fail(d, d.rbe3s[0].src, "RBE3", "RBE3 " + std::to_string(d.rbe3s[0].id) + ": the deck has " + std::to_string(d.rbe3s.size()) + " RBE3 card(s); interpolation elements are not turned into a boltnet model (docs/nastran.md, \"From a deck to a model\")");
 
-  // Parts: the shells of each property; a grid belongs to one property's shells only.
+  // Shell parts: the shells of each property. A grid of several properties' shells is a node of each
+  // part; `owner` is the first part that has it, `copies` the others (tied below).
   std::map<int, std::vector<int>> by_pid; // pid -> shell indices
   for (size_t s = 0; s < d.shells.size(); ++s) by_pid[d.shells[s].pid].push_back((int)s);
-  std::vector<int> owner(d.grids.size(), -1), owner_shell(d.grids.size(), -1); // grid -> part position, first shell
+  std::vector<int> owner(d.grids.size(), -1);
+  std::vector<std::vector<int>> copies(d.grids.size());
   for (const auto &[pid, shells] : by_pid) {
     ModelPart p;
     p.pid = pid;
@@ -164,59 +165,51 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
       for (int mid : {ps.mid1, ps.mid2, ps.mid3})
         if (d.mat8_index.count(mid)) oriented = true;
     }
-    Vec3       direction{1, 0, 0};
+    Vec3 direction{1, 0, 0};
     for (size_t k = 0; k < shells.size(); ++k) {
       const Shell &e = d.shells[shells[k]];
-      const std::string what = (e.kind == ShellKind::Quad4 ? "CQUAD4 " : "CTRIA3 ") + std::to_string(e.id);
+      const std::string card = e.kind == ShellKind::Quad4 ? "CQUAD4" : "CTRIA3", what = card + " " + std::to_string(e.id);
+      const std::string same = " (same property " + std::to_string(pid) + " as element " + std::to_string(first.id) + ")";
       // One section per part: the element's thickness and offset must be the part's.
       for (int i = 0; i < e.Nodes(); ++i) {
         const double t0 = first.t[0], ti = e.t[i];
         if ((std::isnan(t0) != std::isnan(ti)) || (!std::isnan(ti) && ti != t0) || e.tflag != first.tflag)
-          Fail(d, e.src, what.substr(0, 6), what + ": its corner thicknesses differ from those of " + (first.kind == ShellKind::Quad4 ? "CQUAD4 " : "CTRIA3 ") + std::to_string(first.id) +
-                                                 " (same property " + std::to_string(pid) + "): a boltnet part has one section");
+          Fail(d, e.src, card, what + ": its corner thicknesses differ from those of element " + std::to_string(first.id) + same + ": a boltnet part has one section");
       }
-      if (e.zoffs != first.zoffs) Fail(d, e.src, what.substr(0, 6), what + ": ZOFFS " + Num(e.zoffs) + " differs from " + Num(first.zoffs) + " of element " + std::to_string(first.id) + " (same property " + std::to_string(pid) + "): a boltnet part has one reference plane");
+      if (e.zoffs != first.zoffs) Fail(d, e.src, card, what + ": ZOFFS " + Num(e.zoffs) + " differs from " + Num(first.zoffs) + same + ": a boltnet part has one reference plane");
       if (oriented) {
         // boltnet projects one reference direction on every element (shell::ShellMaterial): the
         // element's material axis (MCID's x projected, or G1-G2 turned by THETA) must be that.
         const Vec3 nrm = ElementNormal(d, e);
-        Vec3       ax;
-        if (e.mcid >= 0) {
-          ax = {1, 0, 0};
-          if (e.mcid > 0) {
-            const CoordSystem &cs = d.coords[d.coord_index.at(e.mcid)];
-            if (cs.kind != CoordKind::Rectangular) Fail(d, e.src, what.substr(0, 6), what + ": MCID " + std::to_string(e.mcid) + " is curvilinear: not supported for an orthotropic section");
-            ax = cs.axes[0];
-          }
-        } else {
-          const Vec3 g12 = Unit(Sub(d.grids[e.node[1]].x, d.grids[e.node[0]].x)), o = Cross(nrm, g12);
+        Vec3       ax{1, 0, 0};
+        if (e.mcid > 0) {
+          const CoordSystem &cs = d.coords[d.coord_index.at(e.mcid)];
+          if (cs.kind != CoordKind::Rectangular) Fail(d, e.src, card, what + ": MCID " + std::to_string(e.mcid) + " is curvilinear: not supported for an orthotropic section");
+          ax = cs.axes[0];
+        } else if (e.mcid < 0) {
+          const Vec3   g12 = Unit(Sub(d.grids[e.node[1]].x, d.grids[e.node[0]].x)), o = Cross(nrm, g12);
           const double th = e.theta * M_PI / 180;
           for (int j = 0; j < 3; ++j) ax[j] = std::cos(th) * g12[j] + std::sin(th) * o[j];
         }
         if (k == 0) direction = ax;
-        const double dn = Dot(direction, nrm);
-        const Vec3   proj = Unit({direction[0] - dn * nrm[0], direction[1] - dn * nrm[1], direction[2] - dn * nrm[2]});
-        const double ad = Dot(ax, nrm);
-        const Vec3   axp = Unit({ax[0] - ad * nrm[0], ax[1] - ad * nrm[1], ax[2] - ad * nrm[2]});
-        if (Dot(proj, axp) < std::cos(M_PI / 180))
-          Fail(d, e.src, what.substr(0, 6), what + ": its material axis is " + Num(std::acos(std::min(1.0, Dot(proj, axp))) * 180 / M_PI) + " degrees from the direction of element " + std::to_string(first.id) +
-                                                 " projected on it (same property " + std::to_string(pid) + "): boltnet projects one direction per part (use MCID with one rectangular system)");
+        const auto in_plane = [&](const Vec3 &v) {
+          const double dn = Dot(v, nrm);
+          return Unit({v[0] - dn * nrm[0], v[1] - dn * nrm[1], v[2] - dn * nrm[2]});
+        };
+        const double c = Dot(in_plane(direction), in_plane(ax));
+        if (c < std::cos(M_PI / 180))
+          Fail(d, e.src, card, what + ": its material axis is " + Num(std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / M_PI) + " degrees from the direction of element " + std::to_string(first.id) + " projected on it" + same + ": boltnet projects one direction per part (use MCID with one rectangular system)");
       }
       MeshElement q{-1, -1, -1, -1};
       for (int i = 0; i < e.Nodes(); ++i) {
         const int g = e.node[i];
-        if (owner[g] >= 0 && owner[g] != part) {
-          const Shell &o = d.shells[owner_shell[g]];
-          Fail(d, e.src, what.substr(0, 6), what + ": grid " + std::to_string(d.grids[g].id) + " also belongs to element " + std::to_string(o.id) + " of property " + std::to_string(o.pid) + ", but this element's property is " + std::to_string(pid) +
-                                                 ": a boltnet part is one property's shells, and parts meet only through joints (docs/nastran.md, \"From a deck to a model\")");
-        }
-        owner[g] = part;
-        if (owner_shell[g] < 0) owner_shell[g] = shells[k];
-        auto it = local.find(g);
+        auto      it = local.find(g);
         if (it == local.end()) {
           it = local.emplace(g, (int)p.grids.size()).first;
           p.grids.push_back(g);
           p.mesh.x.push_back(d.grids[g].x);
+          if (owner[g] < 0) owner[g] = part;
+          else copies[g].push_back(part);
         }
         q[i] = it->second;
       }
@@ -229,6 +222,33 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
     p.material.direction = direction;
     m.parts.push_back(std::move(p));
   }
+  // Rigid parts: the grids on no shell that are an RBE2's GN, or that a CBUSH joins and the subcase
+  // constrains (a grounding spring, as in Femap's decks). Any other CBUSH grid on no shell is an error.
+  const std::vector<Constraint> spc = ExpandSpc(d, sc.spc);
+  std::vector<bool>             constrained(d.grids.size(), false);
+  for (const Constraint &c : spc) constrained[c.node] = true;
+  const auto rigid = [&](int g) {
+    if (owner[g] >= 0) return;
+    ModelPart p;
+    p.pid = kRigidPartBase + d.grids[g].id, p.rigid = true, p.x = d.grids[g].x, p.grids = {g};
+    owner[g] = (int)m.parts.size();
+    m.parts.push_back(std::move(p));
+  };
+  for (const Rbe2 &r : d.rbe2s) {
+    const int gn = d.GridIndex(r.gn);
+    if (owner[gn] >= 0) Fail(d, r.src, "RBE2", "RBE2 " + std::to_string(r.id) + ": GN = grid " + std::to_string(r.gn) + " is on a shell: boltnet makes an RBE2 a rigid part at GN tied to its GM grids, so GN must be a grid of no shell");
+    if (r.cm != 0b111111u) Fail(d, r.src, "RBE2", "RBE2 " + std::to_string(r.id) + ": CM = " + DofString(r.cm) + ": boltnet ties all six components (CM = 123456)");
+    rigid(gn);
+  }
+  for (const Bush &b : d.bushes) {
+    if (b.nb < 0) Fail(d, b.src, "CBUSH", "CBUSH " + std::to_string(b.id) + ": grounded (GB blank): boltnet joins two parts; give GB a grid and fix it with SPC");
+    for (const auto &[g, field] : {std::pair<int, const char *>{b.na, "GA"}, {b.nb, "GB"}}) {
+      if (owner[g] < 0 && constrained[g]) rigid(g);
+      if (owner[g] < 0)
+        Fail(d, b.src, "CBUSH", "CBUSH " + std::to_string(b.id) + ": " + field + " = grid " + std::to_string(d.grids[g].id) + " is on no shell element (CQUAD4/CTRIA3), is no RBE2's GN and has no SPC in subcase " + std::to_string(sc.id) + ": a boltnet joint attaches to shell parts or to rigid parts (docs/nastran.md)");
+    }
+  }
+
   const auto local_node = [&](int part, int g) {
     const auto &gs = m.parts[part].grids;
     return (int)(std::find(gs.begin(), gs.end(), g) - gs.begin());
@@ -244,7 +264,8 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
     return Unit(n);
   };
 
-  // Joints: a CBUSH joins the parts of GA and GB at their midpoint; n is the shell normal at GA.
+  // Joints: a CBUSH joins the parts of GA and GB at their midpoint; n is the shell normal at GA (at
+  // GB if GA is a rigid part; the element x axis between two rigid parts).
   std::map<int, std::string> changed; // PBUSH/PFAST id -> how its stiffness was represented
   std::vector<const Bush *> bushes;
   for (const Bush &b : d.bushes) bushes.push_back(&b);
@@ -252,15 +273,13 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
   for (const Bush *bp : bushes) {
     const Bush &b = *bp;
     const std::string what = "CBUSH " + std::to_string(b.id);
-    if (b.nb < 0) Fail(d, b.src, "CBUSH", what + ": grounded (GB blank): boltnet joins two parts; ground a part through SPC instead");
-    for (const auto &[g, field] : {std::pair<int, const char *>{b.na, "GA"}, {b.nb, "GB"}})
-      if (owner[g] < 0) Fail(d, b.src, "CBUSH", what + ": " + field + " = grid " + std::to_string(d.grids[g].id) + " is on no shell element (CQUAD4/CTRIA3): a boltnet joint attaches to shell parts");
     if (owner[b.na] == owner[b.nb]) Fail(d, b.src, "CBUSH", what + ": GA and GB (grids " + std::to_string(b.ga) + ", " + std::to_string(b.gb) + ") are both on shells of property " + std::to_string(m.parts[owner[b.na]].pid) + ": a boltnet joint joins two different parts");
     ModelJoint j;
     j.eid = b.id, j.pid = b.pid, j.part_a = owner[b.na], j.part_b = owner[b.nb];
     const Vec3 xa = d.grids[b.na].x, xb = d.grids[b.nb].x;
     for (int k = 0; k < 3; ++k) j.x[k] = 0.5 * (xa[k] + xb[k]);
-    Frame(normal_at(j.part_a, b.na), b.axes, j.n, j.t1);
+    const Vec3 n = !m.parts[j.part_a].rigid ? normal_at(j.part_a, b.na) : !m.parts[j.part_b].rigid ? normal_at(j.part_b, b.nb) : b.axes[0];
+    Frame(n, b.axes, j.n, j.t1);
     const PBush &pb = d.pbushes[d.pbush_index.at(b.pid)];
     std::string &c = changed[b.pid];
     std::string  ch;
@@ -280,40 +299,71 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
     for (int s = 0; s < 2; ++s) {
       int pid = s ? f.idb : f.ida;
       if (f.by_element) pid = d.shells[d.ShellIndex(pid)].pid;
-      auto it = std::find_if(m.parts.begin(), m.parts.end(), [&](const ModelPart &p) { return p.pid == pid; });
+      auto it = std::find_if(m.parts.begin(), m.parts.end(), [&](const ModelPart &p) { return !p.rigid && p.pid == pid; });
       if (it == m.parts.end()) Fail(d, f.src, "CFAST", what + ": property " + std::to_string(pid) + " has no shell element");
       parts[s] = (int)(it - m.parts.begin());
     }
     if (parts[0] == parts[1]) Fail(d, f.src, "CFAST", what + ": both sides are property " + std::to_string(m.parts[parts[0]].pid) + ": a boltnet joint joins two different parts");
     ModelJoint j;
     j.eid = f.id, j.pid = f.pid, j.fast = true, j.part_a = parts[0], j.part_b = parts[1], j.x = f.position;
-    int near = -1;
+    int    near = -1;
     double best = HUGE_VAL;
     for (int g : m.parts[parts[0]].grids) {
       const Vec3 r = Sub(d.grids[g].x, f.position);
       if (Dot(r, r) < best) best = Dot(r, r), near = g;
     }
     const Vec3 n = normal_at(parts[0], near);
-    const Axes axes{{n, Unit(Cross(n, std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), {}}};
-    Axes full = axes;
-    full[2] = Cross(full[0], full[1]);
-    Frame(n, full, j.n, j.t1);
+    Axes       axes{{n, Unit(Cross(n, std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), {}}};
+    axes[2] = Cross(axes[0], axes[1]);
+    Frame(n, axes, j.n, j.t1);
     const PFast &pf = d.pfasts[d.pfast_index.at(f.pid)];
     std::string &c = changed[-f.pid];
     std::string  ch;
-    Stiffness(full, pf.k, j.n, j.t1, j, ch);
+    Stiffness(axes, pf.k, j.n, j.t1, j, ch);
     if (c.empty() && !ch.empty()) c = "PFAST " + std::to_string(f.pid) + " (first at CFAST " + std::to_string(f.id) + "): " + ch;
     m.joints.push_back(j);
   }
   for (const auto &[pid, c] : changed)
     if (!c.empty()) m.notes.push_back(c);
 
-  // Constraints: grouped per part and component set into node sets "spc<components>"; enforced
-  // values per grid ("grid<id>"). Components are in the grid's CD system: a CD other than the basic
-  // axes is accepted where the components cover all three translations or rotations with value 0.
+  // Ties: shared grids (each copy to the owner's node) and RBE2 (GN's rigid part to each GM grid),
+  // at the grid, with the penalty stiffness of ModelOptions.
+  double a11 = 0, d11 = 0;
+  for (const ModelPart &p : m.parts)
+    if (!p.rigid) a11 = std::max(a11, p.material.A[0]), d11 = std::max(d11, p.material.D[0]);
+  int        nties = 0, nshared = 0;
+  const auto tie = [&](int part_a, int part_b, int g) {
+    ModelJoint j;
+    j.eid = kTieJointBase + ++nties, j.part_a = part_a, j.part_b = part_b, j.x = d.grids[g].x;
+    const int  shell = !m.parts[part_a].rigid ? part_a : part_b;
+    const Vec3 n = normal_at(shell, g);
+    Frame(n, Axes{{n, Unit(Cross(n, std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), {}}}, j.n, j.t1);
+    j.kn = j.kt = options.tie_penalty * a11, j.kr = options.tie_penalty * d11;
+    m.joints.push_back(j);
+  };
+  for (size_t g = 0; g < d.grids.size(); ++g)
+    for (int c : copies[g]) tie(owner[g], c, (int)g), ++nshared;
+  for (const Rbe2 &r : d.rbe2s)
+    for (int gid : r.gm) {
+      const int g = d.GridIndex(gid);
+      if (owner[g] < 0 || m.parts[owner[g]].rigid) Fail(d, r.src, "RBE2", "RBE2 " + std::to_string(r.id) + ": GM grid " + std::to_string(gid) + " is on no shell element: boltnet ties an RBE2's GM grids to shell parts");
+      tie(owner[d.GridIndex(r.gn)], owner[g], g);
+    }
+  if (nties)
+    m.notes.push_back(std::to_string(nties) + " tie(s) (joints " + std::to_string(kTieJointBase + 1) + " to " + std::to_string(kTieJointBase + nties) + "): " + std::to_string(nshared) + " for grids shared by the shells of two properties, " + std::to_string(nties - nshared) +
+                      " for RBE2 GM grids; spring kn = kt = " + Num(options.tie_penalty * a11) + ", kr = " + Num(options.tie_penalty * d11) + " (penalty " + Num(options.tie_penalty) + " x the largest A11 and D11)");
+
+  // Constraints: grouped per part and component set into node sets "spc<components>" (every copy of
+  // a shared grid), enforced values per grid ("grid<id>"); a rigid part's on the part. Components
+  // are in the grid's CD system: a CD other than the basic axes is accepted where the components
+  // cover all three translations or rotations with value 0.
   std::map<std::pair<int, DofSet>, std::vector<int>> fixed;
   std::set<int> skipped;
-  for (const Constraint &c : ExpandSpc(d, sc.spc)) {
+  const auto bc = [&](int part, const std::string &set, int node, int dof, ModelBCKind kind, double value) {
+    if (m.parts[part].rigid) m.bcs.push_back({part, "", {}, dof, kind, value});
+    else m.bcs.push_back({part, set, {node}, dof, kind, value});
+  };
+  for (const Constraint &c : spc) {
     const Grid &g = d.grids[c.node];
     if (owner[c.node] < 0) {
       skipped.insert(g.id);
@@ -328,23 +378,28 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
     const DofSet tr = c.dofs & 7u, rot = (c.dofs >> 3) & 7u;
     if (!basic && (nonzero || (tr != 0 && tr != 7) || (rot != 0 && rot != 7)))
       Fail(d, g.src, "GRID", "grid " + std::to_string(g.id) + " (SPC components " + DofString(c.dofs) + "): its displacement system CD " + std::to_string(g.cd) + " is not the basic axes; boltnet constrains basic components (all three translations or rotations, fixed, are accepted in any system)");
-    const int part = owner[c.node], node = local_node(part, c.node);
-    const DofSet zero = [&] {
-      DofSet z = 0;
+    std::vector<int> parts{owner[c.node]};
+    parts.insert(parts.end(), copies[c.node].begin(), copies[c.node].end());
+    for (int part : parts) {
+      const int node = local_node(part, c.node);
+      for (int i = 0; i < 6; ++i) {
+        if (!(c.dofs >> i & 1u)) continue;
+        if (c.value[i] != 0) bc(part, "grid" + std::to_string(g.id), node, i, ModelBCKind::Displacement, c.value[i]);
+        else if (m.parts[part].rigid) bc(part, "", 0, i, ModelBCKind::Fixed, 0);
+      }
+      DofSet zero = 0;
       for (int i = 0; i < 6; ++i)
-        if ((c.dofs >> i & 1u) && c.value[i] == 0) z |= 1u << i;
-      return z;
-    }();
-    if (zero) fixed[{part, zero}].push_back(node);
-    for (int i = 0; i < 6; ++i)
-      if ((c.dofs >> i & 1u) && c.value[i] != 0) m.bcs.push_back({part, "grid" + std::to_string(g.id), {node}, i, ModelBCKind::Displacement, c.value[i]});
+        if ((c.dofs >> i & 1u) && c.value[i] == 0) zero |= 1u << i;
+      if (zero && !m.parts[part].rigid) fixed[{part, zero}].push_back(node);
+    }
   }
   for (const auto &[key, nodes] : fixed)
     for (int i = 0; i < 6; ++i)
       if (key.second >> i & 1u) m.bcs.push_back({key.first, "spc" + DofString(key.second), nodes, i, ModelBCKind::Fixed, 0});
-  if (!skipped.empty()) m.notes.push_back("subcase " + std::to_string(sc.id) + ": constraints on " + std::to_string(skipped.size()) + " grid(s) on no shell element skipped (first: grid " + std::to_string(*skipped.begin()) + ")");
+  if (!skipped.empty()) m.notes.push_back("subcase " + std::to_string(sc.id) + ": constraints on " + std::to_string(skipped.size()) + " grid(s) on no shell element and no joint skipped (first: grid " + std::to_string(*skipped.begin()) + ")");
 
-  // Loads: FORCE, MOMENT and PLOAD4 (as consistent nodal forces) per grid, in the basic system.
+  // Loads: FORCE, MOMENT and PLOAD4 (as consistent nodal forces) per grid, in the basic system, on
+  // the grid's first part.
   StaticLoad load = ExpandLoad(d, sc.load);
   PressuresToNodal(d, load.pressures, load.nodal);
   for (const NodalLoad &l : load.nodal) {
@@ -352,11 +407,11 @@ DeckModel ModelOf(const Deck &d, int subcase_id)
     bool any = false;
     for (int i = 0; i < 3; ++i) any = any || l.force[i] != 0 || l.moment[i] != 0;
     if (!any) continue;
-    if (owner[l.node] < 0) Fail(d, g.src, "GRID", "grid " + std::to_string(g.id) + " carries a load in subcase " + std::to_string(sc.id) + " (LOAD " + std::to_string(sc.load) + ") but is on no shell element: boltnet loads shell parts");
+    if (owner[l.node] < 0) Fail(d, g.src, "GRID", "grid " + std::to_string(g.id) + " carries a load in subcase " + std::to_string(sc.id) + " (LOAD " + std::to_string(sc.load) + ") but is on no shell element and no joint: boltnet loads parts");
     const int part = owner[l.node], node = local_node(part, l.node);
     for (int i = 0; i < 6; ++i) {
       const double v = i < 3 ? l.force[i] : l.moment[i - 3];
-      if (v != 0) m.bcs.push_back({part, "grid" + std::to_string(g.id), {node}, i, ModelBCKind::Force, v});
+      if (v != 0) bc(part, "grid" + std::to_string(g.id), node, i, ModelBCKind::Force, v);
     }
   }
   return m;
