@@ -182,7 +182,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   // scene's nastran: section.
   PetscOptionsBegin(comm, nullptr, "Nastran deck as the model", "boltnet");
   PetscCall(PetscOptionsString("-nastran_deck", "Nastran bulk data deck to run instead of the scene's tables: shell properties become parts, CBUSH/CFAST joints, SPC fixed dof, FORCE/MOMENT/PLOAD4 loads (docs/nastran.md)", "", deckfile, deckfile, sizeof(deckfile), &hasDeck));
-  PetscCall(PetscOptionsInt("-nastran_subcase", "Subcase of the deck to run (0: every subcase, each into <output_dir>/subcase-<id>)", "", subcase, &subcase, nullptr));
+  PetscCall(PetscOptionsInt("-nastran_subcase", "Subcase of the deck to run (0: every subcase, each into the folder subcase-N of the output directory)", "", subcase, &subcase, nullptr));
   PetscCall(PetscOptionsString("-nastran_fasteners", "CSV fastener table turning chosen CBUSH/CFAST into joint types: type and first[,last] (element ids) or pid (PBUSH/PFAST id); the others keep their PBUSH/PFAST spring", "", fasteners, fasteners, sizeof(fasteners), nullptr));
   PetscCall(PetscOptionsReal("-nastran_tie_penalty", "Stiffness of the ties that stand for a grid shared by two shell properties and for RBE2: kn = kt = this x the largest membrane stiffness A11 of the deck's shells, kr = this x the largest D11", "", tie_penalty, &tie_penalty, nullptr));
   PetscOptionsEnd();
