@@ -1,6 +1,6 @@
 # Nastran reader tests (docs/nastran.md). The reader is pure C++: the unit tests compile its sources
 # (and lib/shell/material.cpp for the sections) without PETSc or MPI.
-add_executable(test_nastran ${CMAKE_CURRENT_SOURCE_DIR}/test_nastran.cpp ${CMAKE_CURRENT_SOURCE_DIR}/test_nastran_errors.cpp
+add_executable(test_nastran ${CMAKE_CURRENT_SOURCE_DIR}/test_nastran.cpp ${CMAKE_CURRENT_SOURCE_DIR}/test_nastran_errors.cpp ${CMAKE_CURRENT_SOURCE_DIR}/test_nastran_model.cpp
   ${BOLTNET_NASTRAN_SOURCES} ${PROJECT_SOURCE_DIR}/lib/shell/material.cpp)
 target_include_directories(test_nastran PRIVATE ${PROJECT_SOURCE_DIR}/lib)
 target_link_libraries(test_nastran PRIVATE GTest::gtest GTest::gtest_main)

@@ -2,6 +2,7 @@
 #pragma once
 #include "network/assembly.hpp"
 #include "network/fields.hpp"
+#include "nastran/model.hpp"
 
 #include <set>
 #include <string>
@@ -22,6 +23,15 @@ struct Scene {
 PetscErrorCode SceneInsertOptionsFile(MPI_Comm comm, const char file[], Scene *scene);
 // Read -scene_* options and the CSV tables they name, and describe the assembly.
 PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembly a);
+// The parameters of joint type `type` from -joint_<type>_* (given, or identified from the fastener
+// geometry, which may measure the shell mesh around its first joint: id, patches, axis n, t1, x).
+PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::string &type, PetscInt id, PetscInt patch_a, PetscInt patch_b, const PetscReal n[3], const PetscReal t1[3], const PetscReal x[3], BoltnetJointParams *p, Scene *scene);
+// A Nastran deck as the scene (io/nastran.cpp, docs/nastran.md "From a deck to a model"): the ids
+// of the subcases to run (chosen > 0: that one, checked; else every subcase of the deck), and the
+// model of one subcase described into the assembly, with the fastener table (CSV: type and first
+// [, last] or pid; "" for none) turning chosen CBUSH/CFAST into joints of a type.
+PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, PetscInt chosen, std::vector<PetscInt> *ids);
+PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a);
 // Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
 // a misspelled boltnet option stops the run before it starts.
 PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);

@@ -272,6 +272,12 @@ PetscErrorCode MaterialFromOptions(MPI_Comm comm, const std::string &name, shell
 
 } // namespace
 
+PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::string &type, PetscInt id, PetscInt patch_a, PetscInt patch_b, const PetscReal n[3], const PetscReal t1[3], const PetscReal x[3], BoltnetJointParams *p, Scene *scene)
+{
+  const FirstJoint fj = {id, patch_a, patch_b, {n[0], n[1], n[2]}, {t1[0], t1[1], t1[2]}, {x[0], x[1], x[2]}};
+  return Guard(comm, [&] { return JointTypeFromOptions(comm, a, type, fj, p, scene); });
+}
+
 PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text)
 {
   PetscMPIInt rank;
@@ -529,7 +535,7 @@ PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm)
   PetscCall(PetscOptionsLeftGet(nullptr, &n, &names, &values));
   for (PetscInt i = 0; i < n; ++i) {
     const std::string s = names[i];
-    if (s.rfind("scene_", 0) == 0 || s.rfind("joint_", 0) == 0 || s.rfind("load_", 0) == 0 || s.rfind("material_", 0) == 0 || s.rfind("coupling_", 0) == 0 || s == "output_dir") bad += " -" + s;
+    if (s.rfind("scene_", 0) == 0 || s.rfind("nastran_", 0) == 0 || s.rfind("joint_", 0) == 0 || s.rfind("load_", 0) == 0 || s.rfind("material_", 0) == 0 || s.rfind("coupling_", 0) == 0 || s == "output_dir") bad += " -" + s;
   }
   PetscCall(PetscOptionsLeftRestore(nullptr, &n, &names, &values));
   PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Unknown boltnet option(s):%s (misspelled, or a joint type that no joint of the fastener table uses?); -help lists the options", bad.c_str());

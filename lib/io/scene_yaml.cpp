@@ -14,7 +14,7 @@ namespace {
 
 // boltnet's sections: the option prefixes its drivers and library read (io/scene.cpp,
 // network/api.cpp, solver/loadpath.cpp, drivers/boltnet.cpp).
-const char *const kBoltnetSections[] = {"scene", "material", "joint", "coupling", "load", "patch", "output"};
+const char *const kBoltnetSections[] = {"scene", "nastran", "material", "joint", "coupling", "load", "patch", "output"};
 // PETSc's: the first words of the options that `boltnet -scene ... -help` lists (PETSc 3.18: the
 // solver objects' and the run-time options read by PetscInitialize), plus the prefixes of the
 // objects and sub-solvers PETSc creates from options (vec, is, sf, petscpartitioner, sub, mg,

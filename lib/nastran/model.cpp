@@ -1,0 +1,420 @@
+// A deck's subcase as boltnet's model (model.hpp; docs/nastran.md, "From a deck to a model").
+#include "nastran/model.hpp"
+#include "nastran/section.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace boltnet::nastran {
+
+namespace {
+
+Vec3   Cross(const Vec3 &a, const Vec3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+double Dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3   Sub(const Vec3 &a, const Vec3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3   Unit(const Vec3 &a)
+{
+  const double n = std::sqrt(Dot(a, a));
+  return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
+}
+std::string Num(double v)
+{
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+[[noreturn]] void Fail(const Deck &d, const Source &at, const std::string &card, const std::string &what)
+{
+  throw Error(d.Where(at) + ": " + what, at.file >= 0 ? d.files[at.file] : "", at.line, card, 0);
+}
+
+// The unit normal of a shell element (G1, G2, G3 right-handed; a quadrilateral's from its diagonals).
+Vec3 ElementNormal(const Deck &d, const Shell &e)
+{
+  const auto X = [&](int i) { return d.grids[e.node[i]].x; };
+  if (e.kind == ShellKind::Quad4) return Unit(Cross(Sub(X(2), X(0)), Sub(X(3), X(1))));
+  return Unit(Cross(Sub(X(1), X(0)), Sub(X(2), X(0))));
+}
+
+// The spring stiffnesses of a joint frame (n, t1, t2) from a bush's diagonal stiffness k (1-3
+// translations, 4-6 rotations) in its element axes: K = sum k_i a_i a_i^T projected on the frame.
+// boltnet's spring has one in-plane stiffness kt and one rotational kr (docs/joint-laws.md): kt is
+// the mean of the two in-plane values and kr the mean of the three rotational ones; what this
+// changes is reported once per property.
+void Stiffness(const Axes &axes, const std::array<double, 6> &k, const Vec3 &n, const Vec3 &t1, ModelJoint &j, std::string &change)
+{
+  const Vec3 t2 = Cross(n, t1);
+  const auto q  = [&](int first, const Vec3 &u, const Vec3 &v) {
+    double s = 0;
+    for (int i = 0; i < 3; ++i) s += k[first + i] * Dot(axes[i], u) * Dot(axes[i], v);
+    return s;
+  };
+  j.kn = q(0, n, n);
+  const double kt1 = q(0, t1, t1), kt2 = q(0, t2, t2);
+  j.kt = 0.5 * (kt1 + kt2);
+  const double r[3] = {q(3, n, n), q(3, t1, t1), q(3, t2, t2)};
+  j.kr = (r[0] + r[1] + r[2]) / 3;
+  const double coupling = std::max({std::fabs(q(0, n, t1)), std::fabs(q(0, n, t2)), std::fabs(q(0, t1, t2))});
+  const double scale = std::max({std::fabs(j.kn), std::fabs(kt1), std::fabs(kt2), 1e-300});
+  std::ostringstream m;
+  if (std::fabs(kt1 - kt2) > 1e-6 * std::max(std::fabs(kt1), std::fabs(kt2))) m << "in-plane stiffnesses " << kt1 << " and " << kt2 << " averaged to kt = " << j.kt << "; ";
+  if (*std::max_element(r, r + 3) - *std::min_element(r, r + 3) > 1e-6 * std::fabs(*std::max_element(r, r + 3)))
+    m << "rotational stiffnesses " << r[0] << ", " << r[1] << ", " << r[2] << " (about n, t1, t2) averaged to kr = " << j.kr << "; ";
+  if (coupling > 1e-6 * scale) m << "stiffness coupling between the joint axes (up to " << coupling << ") dropped; ";
+  if (change.empty()) change = m.str();
+}
+
+// A joint frame: n the shell normal at the grid (mean of the normals of part `part`'s elements on
+// it), t1 the element axis most nearly in the plane (projected), else any in-plane direction.
+void Frame(const Vec3 &normal, const Axes &axes, Vec3 &n, Vec3 &t1)
+{
+  n = normal;
+  int best = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::fabs(Dot(axes[i], n)) < std::fabs(Dot(axes[best], n))) best = i;
+  Vec3 t = axes[best];
+  const double d = Dot(t, n);
+  t1 = Unit({t[0] - d * n[0], t[1] - d * n[1], t[2] - d * n[2]});
+  if (Dot(t1, t1) < 0.5) t1 = Unit(Cross(n, std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
+}
+
+} // namespace
+
+const Subcase &FindSubcase(const Deck &d, int id)
+{
+  std::string ids;
+  for (const Subcase &s : d.subcases) {
+    if (s.id == id) return s;
+    ids += (ids.empty() ? "" : ", ") + std::to_string(s.id);
+  }
+  throw Error((d.files.empty() ? std::string("deck") : d.files[0]) + ": no subcase " + std::to_string(id) + " (the deck has subcase(s) " + ids + ")", d.files.empty() ? "" : d.files[0], 0, "SUBCASE", 0);
+}
+
+void PressuresToNodal(const Deck &d, const std::vector<ShellPressure> &pressures, std::vector<NodalLoad> &nodal)
+{
+  std::map<int, NodalLoad> by;
+  for (NodalLoad &l : nodal) by[l.node] = l;
+  for (const ShellPressure &s : pressures) {
+    const Shell &e = d.shells[s.shell];
+    std::array<Vec3, 4> X{};
+    for (int i = 0; i < e.Nodes(); ++i) X[i] = d.grids[e.node[i]].x;
+    // f dA = p (X_xi x X_eta) dxi deta, or p |X_xi x X_eta| along a given direction; node i gets N_i f dA.
+    const auto at = [&](const std::array<double, 4> &N, const Vec3 &dxi, const Vec3 &deta, double w) {
+      Vec3   a = Cross(dxi, deta);
+      double p = 0;
+      for (int i = 0; i < e.Nodes(); ++i) p += N[i] * s.p[i];
+      if (s.has_direction) {
+        const double area = std::sqrt(Dot(a, a));
+        a = {s.direction[0] * area, s.direction[1] * area, s.direction[2] * area};
+      }
+      for (int i = 0; i < e.Nodes(); ++i) {
+        NodalLoad &l = by[e.node[i]];
+        l.node = e.node[i];
+        for (int j = 0; j < 3; ++j) l.force[j] += w * N[i] * p * a[j];
+      }
+    };
+    if (e.kind == ShellKind::Quad4) {
+      const double g = 1 / std::sqrt(3.0);
+      for (double xi : {-g, g})
+        for (double eta : {-g, g}) {
+          const std::array<double, 4> N{(1 - xi) * (1 - eta) / 4, (1 + xi) * (1 - eta) / 4, (1 + xi) * (1 + eta) / 4, (1 - xi) * (1 + eta) / 4};
+          const double dNxi[4] = {-(1 - eta) / 4, (1 - eta) / 4, (1 + eta) / 4, -(1 + eta) / 4};
+          const double dNeta[4] = {-(1 - xi) / 4, -(1 + xi) / 4, (1 + xi) / 4, (1 - xi) / 4};
+          Vec3 dxi{}, deta{};
+          for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 3; ++j) dxi[j] += dNxi[i] * X[i][j], deta[j] += dNeta[i] * X[i][j];
+          at(N, dxi, deta, 1.0);
+        }
+    } else {
+      const Vec3 e1 = Sub(X[1], X[0]), e2 = Sub(X[2], X[0]);
+      for (const std::array<double, 4> &N : {std::array<double, 4>{.5, .5, 0, 0}, {0, .5, .5, 0}, {.5, 0, .5, 0}}) at(N, e1, e2, 1.0 / 6);
+    }
+  }
+  nodal.clear();
+  for (auto &[node, l] : by) nodal.push_back(l);
+}
+
+DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
+{
+  const Subcase &sc = FindSubcase(d, subcase_id);
+  DeckModel      m;
+  m.subcase = sc.id;
+  // Cards whose meaning boltnet's model cannot hold: refused, never dropped.
+  if (!d.rbe3s.empty()) Fail(d, d.rbe3s[0].src, "RBE3", "RBE3 " + std::to_string(d.rbe3s[0].id) + ": the deck has " + std::to_string(d.rbe3s.size()) + " RBE3 card(s); interpolation elements are not turned into a boltnet model (docs/nastran.md, \"From a deck to a model\")");
+
+  // Shell parts: the shells of each property. A grid of several properties' shells is a node of each
+  // part; `owner` is the first part that has it, `copies` the others (tied below).
+  std::map<int, std::vector<int>> by_pid; // pid -> shell indices
+  for (size_t s = 0; s < d.shells.size(); ++s) by_pid[d.shells[s].pid].push_back((int)s);
+  std::vector<int> owner(d.grids.size(), -1);
+  std::vector<std::vector<int>> copies(d.grids.size());
+  for (const auto &[pid, shells] : by_pid) {
+    ModelPart p;
+    p.pid = pid;
+    const int part = (int)m.parts.size();
+    std::map<int, int> local;
+    const Shell &first = d.shells[shells[0]];
+    const bool   composite = d.pcomp_index.count(pid) > 0;
+    bool oriented = composite; // the section depends on the material axes
+    if (!composite && d.pshell_index.count(pid)) {
+      const PShell &ps = d.pshells[d.pshell_index.at(pid)];
+      for (int mid : {ps.mid1, ps.mid2, ps.mid3})
+        if (d.mat8_index.count(mid)) oriented = true;
+    }
+    Vec3 direction{1, 0, 0};
+    for (size_t k = 0; k < shells.size(); ++k) {
+      const Shell &e = d.shells[shells[k]];
+      const std::string card = e.kind == ShellKind::Quad4 ? "CQUAD4" : "CTRIA3", what = card + " " + std::to_string(e.id);
+      const std::string same = " (same property " + std::to_string(pid) + " as element " + std::to_string(first.id) + ")";
+      // One section per part: the element's thickness and offset must be the part's.
+      for (int i = 0; i < e.Nodes(); ++i) {
+        const double t0 = first.t[0], ti = e.t[i];
+        if ((std::isnan(t0) != std::isnan(ti)) || (!std::isnan(ti) && ti != t0) || e.tflag != first.tflag)
+          Fail(d, e.src, card, what + ": its corner thicknesses differ from those of element " + std::to_string(first.id) + same + ": a boltnet part has one section");
+      }
+      if (e.zoffs != first.zoffs) Fail(d, e.src, card, what + ": ZOFFS " + Num(e.zoffs) + " differs from " + Num(first.zoffs) + same + ": a boltnet part has one reference plane");
+      if (oriented) {
+        // boltnet projects one reference direction on every element (shell::ShellMaterial): the
+        // element's material axis (MCID's x projected, or G1-G2 turned by THETA) must be that.
+        const Vec3 nrm = ElementNormal(d, e);
+        Vec3       ax{1, 0, 0};
+        if (e.mcid > 0) {
+          const CoordSystem &cs = d.coords[d.coord_index.at(e.mcid)];
+          if (cs.kind != CoordKind::Rectangular) Fail(d, e.src, card, what + ": MCID " + std::to_string(e.mcid) + " is curvilinear: not supported for an orthotropic section");
+          ax = cs.axes[0];
+        } else if (e.mcid < 0) {
+          const Vec3   g12 = Unit(Sub(d.grids[e.node[1]].x, d.grids[e.node[0]].x)), o = Cross(nrm, g12);
+          const double th = e.theta * M_PI / 180;
+          for (int j = 0; j < 3; ++j) ax[j] = std::cos(th) * g12[j] + std::sin(th) * o[j];
+        }
+        if (k == 0) direction = ax;
+        const auto in_plane = [&](const Vec3 &v) {
+          const double dn = Dot(v, nrm);
+          return Unit({v[0] - dn * nrm[0], v[1] - dn * nrm[1], v[2] - dn * nrm[2]});
+        };
+        const double c = Dot(in_plane(direction), in_plane(ax));
+        if (c < std::cos(M_PI / 180))
+          Fail(d, e.src, card, what + ": its material axis is " + Num(std::acos(std::max(-1.0, std::min(1.0, c))) * 180 / M_PI) + " degrees from the direction of element " + std::to_string(first.id) + " projected on it" + same + ": boltnet projects one direction per part (use MCID with one rectangular system)");
+      }
+      MeshElement q{-1, -1, -1, -1};
+      for (int i = 0; i < e.Nodes(); ++i) {
+        const int g = e.node[i];
+        auto      it = local.find(g);
+        if (it == local.end()) {
+          it = local.emplace(g, (int)p.grids.size()).first;
+          p.grids.push_back(g);
+          p.mesh.x.push_back(d.grids[g].x);
+          if (owner[g] < 0) owner[g] = part;
+          else copies[g].push_back(part);
+        }
+        q[i] = it->second;
+      }
+      p.mesh.elems.push_back(q);
+    }
+    const double t = first.t[0];
+    if (first.tflag != 0 && !std::isnan(t)) Fail(d, first.src, "CQUAD4", "element " + std::to_string(first.id) + ": TFLAG 1 (relative corner thicknesses) is not supported");
+    p.material = SectionOf(d, pid, t, m.notes);
+    if (first.zoffs != 0) p.material = Offset(p.material, -first.zoffs);
+    p.material.direction = direction;
+    m.parts.push_back(std::move(p));
+  }
+  // Rigid parts: the grids on no shell that are an RBE2's GN, or that a CBUSH joins and the subcase
+  // constrains (a grounding spring, as in Femap's decks). Any other CBUSH grid on no shell is an error.
+  const std::vector<Constraint> spc = ExpandSpc(d, sc.spc);
+  std::vector<bool>             constrained(d.grids.size(), false);
+  for (const Constraint &c : spc) constrained[c.node] = true;
+  const auto rigid = [&](int g) {
+    if (owner[g] >= 0) return;
+    ModelPart p;
+    p.pid = kRigidPartBase + d.grids[g].id, p.rigid = true, p.x = d.grids[g].x, p.grids = {g};
+    owner[g] = (int)m.parts.size();
+    m.parts.push_back(std::move(p));
+  };
+  for (const Rbe2 &r : d.rbe2s) {
+    const int gn = d.GridIndex(r.gn);
+    if (owner[gn] >= 0) Fail(d, r.src, "RBE2", "RBE2 " + std::to_string(r.id) + ": GN = grid " + std::to_string(r.gn) + " is on a shell: boltnet makes an RBE2 a rigid part at GN tied to its GM grids, so GN must be a grid of no shell");
+    if (r.cm != 0b111111u) Fail(d, r.src, "RBE2", "RBE2 " + std::to_string(r.id) + ": CM = " + DofString(r.cm) + ": boltnet ties all six components (CM = 123456)");
+    rigid(gn);
+  }
+  for (const Bush &b : d.bushes) {
+    if (b.nb < 0) Fail(d, b.src, "CBUSH", "CBUSH " + std::to_string(b.id) + ": grounded (GB blank): boltnet joins two parts; give GB a grid and fix it with SPC");
+    for (const auto &[g, field] : {std::pair<int, const char *>{b.na, "GA"}, {b.nb, "GB"}}) {
+      if (owner[g] < 0 && constrained[g]) rigid(g);
+      if (owner[g] < 0)
+        Fail(d, b.src, "CBUSH", "CBUSH " + std::to_string(b.id) + ": " + field + " = grid " + std::to_string(d.grids[g].id) + " is on no shell element (CQUAD4/CTRIA3), is no RBE2's GN and has no SPC in subcase " + std::to_string(sc.id) + ": a boltnet joint attaches to shell parts or to rigid parts (docs/nastran.md)");
+    }
+  }
+
+  const auto local_node = [&](int part, int g) {
+    const auto &gs = m.parts[part].grids;
+    return (int)(std::find(gs.begin(), gs.end(), g) - gs.begin());
+  };
+  const auto normal_at = [&](int part, int g) {
+    Vec3 n{};
+    for (int s : by_pid.at(m.parts[part].pid)) {
+      const Shell &e = d.shells[s];
+      if (std::find(e.node.begin(), e.node.begin() + e.Nodes(), g) == e.node.begin() + e.Nodes()) continue;
+      const Vec3 en = ElementNormal(d, e);
+      for (int j = 0; j < 3; ++j) n[j] += en[j];
+    }
+    return Unit(n);
+  };
+
+  // Joints: a CBUSH joins the parts of GA and GB at their midpoint; n is the shell normal at GA (at
+  // GB if GA is a rigid part; the element x axis between two rigid parts).
+  std::map<int, std::string> changed; // PBUSH/PFAST id -> how its stiffness was represented
+  std::vector<const Bush *> bushes;
+  for (const Bush &b : d.bushes) bushes.push_back(&b);
+  std::sort(bushes.begin(), bushes.end(), [](const Bush *a, const Bush *b) { return a->id < b->id; });
+  for (const Bush *bp : bushes) {
+    const Bush &b = *bp;
+    const std::string what = "CBUSH " + std::to_string(b.id);
+    if (owner[b.na] == owner[b.nb]) Fail(d, b.src, "CBUSH", what + ": GA and GB (grids " + std::to_string(b.ga) + ", " + std::to_string(b.gb) + ") are both on shells of property " + std::to_string(m.parts[owner[b.na]].pid) + ": a boltnet joint joins two different parts");
+    ModelJoint j;
+    j.eid = b.id, j.pid = b.pid, j.part_a = owner[b.na], j.part_b = owner[b.nb];
+    const Vec3 xa = d.grids[b.na].x, xb = d.grids[b.nb].x;
+    for (int k = 0; k < 3; ++k) j.x[k] = 0.5 * (xa[k] + xb[k]);
+    const Vec3 n = !m.parts[j.part_a].rigid ? normal_at(j.part_a, b.na) : !m.parts[j.part_b].rigid ? normal_at(j.part_b, b.nb) : b.axes[0];
+    Frame(n, b.axes, j.n, j.t1);
+    const PBush &pb = d.pbushes[d.pbush_index.at(b.pid)];
+    std::string &c = changed[b.pid];
+    std::string  ch;
+    Stiffness(b.axes, pb.k, j.n, j.t1, j, ch);
+    if (c.empty() && !ch.empty()) c = "PBUSH " + std::to_string(b.pid) + " (first at CBUSH " + std::to_string(b.id) + "): " + ch;
+    m.joints.push_back(j);
+  }
+  // A CFAST joins its two properties (TYPE PROP) or the properties of its two elements (ELEM) at
+  // GS/XS; n is the normal of part A at its nearest grid; PFAST KT1 acts along n.
+  std::vector<const Fast *> fasts;
+  for (const Fast &f : d.fasts) fasts.push_back(&f);
+  std::sort(fasts.begin(), fasts.end(), [](const Fast *a, const Fast *b) { return a->id < b->id; });
+  for (const Fast *fp : fasts) {
+    const Fast &f = *fp;
+    const std::string what = "CFAST " + std::to_string(f.id);
+    int parts[2];
+    for (int s = 0; s < 2; ++s) {
+      int pid = s ? f.idb : f.ida;
+      if (f.by_element) pid = d.shells[d.ShellIndex(pid)].pid;
+      auto it = std::find_if(m.parts.begin(), m.parts.end(), [&](const ModelPart &p) { return !p.rigid && p.pid == pid; });
+      if (it == m.parts.end()) Fail(d, f.src, "CFAST", what + ": property " + std::to_string(pid) + " has no shell element");
+      parts[s] = (int)(it - m.parts.begin());
+    }
+    if (parts[0] == parts[1]) Fail(d, f.src, "CFAST", what + ": both sides are property " + std::to_string(m.parts[parts[0]].pid) + ": a boltnet joint joins two different parts");
+    ModelJoint j;
+    j.eid = f.id, j.pid = f.pid, j.fast = true, j.part_a = parts[0], j.part_b = parts[1], j.x = f.position;
+    int    near = -1;
+    double best = HUGE_VAL;
+    for (int g : m.parts[parts[0]].grids) {
+      const Vec3 r = Sub(d.grids[g].x, f.position);
+      if (Dot(r, r) < best) best = Dot(r, r), near = g;
+    }
+    const Vec3 n = normal_at(parts[0], near);
+    Axes       axes{{n, Unit(Cross(n, std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), {}}};
+    axes[2] = Cross(axes[0], axes[1]);
+    Frame(n, axes, j.n, j.t1);
+    const PFast &pf = d.pfasts[d.pfast_index.at(f.pid)];
+    std::string &c = changed[-f.pid];
+    std::string  ch;
+    Stiffness(axes, pf.k, j.n, j.t1, j, ch);
+    if (c.empty() && !ch.empty()) c = "PFAST " + std::to_string(f.pid) + " (first at CFAST " + std::to_string(f.id) + "): " + ch;
+    m.joints.push_back(j);
+  }
+  for (const auto &[pid, c] : changed)
+    if (!c.empty()) m.notes.push_back(c);
+
+  // Ties: shared grids (each copy to the owner's node) and RBE2 (GN's rigid part to each GM grid),
+  // at the grid, with the penalty stiffness of ModelOptions.
+  double a11 = 0, d11 = 0;
+  for (const ModelPart &p : m.parts)
+    if (!p.rigid) a11 = std::max(a11, p.material.A[0]), d11 = std::max(d11, p.material.D[0]);
+  int        nties = 0, nshared = 0;
+  const auto tie = [&](int part_a, int part_b, int g) {
+    ModelJoint j;
+    j.eid = kTieJointBase + ++nties, j.part_a = part_a, j.part_b = part_b, j.x = d.grids[g].x;
+    const int  shell = !m.parts[part_a].rigid ? part_a : part_b;
+    const Vec3 n = normal_at(shell, g);
+    Frame(n, Axes{{n, Unit(Cross(n, std::fabs(n[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0})), {}}}, j.n, j.t1);
+    j.kn = j.kt = options.tie_penalty * a11, j.kr = options.tie_penalty * d11;
+    m.joints.push_back(j);
+  };
+  for (size_t g = 0; g < d.grids.size(); ++g)
+    for (int c : copies[g]) tie(owner[g], c, (int)g), ++nshared;
+  for (const Rbe2 &r : d.rbe2s)
+    for (int gid : r.gm) {
+      const int g = d.GridIndex(gid);
+      if (owner[g] < 0 || m.parts[owner[g]].rigid) Fail(d, r.src, "RBE2", "RBE2 " + std::to_string(r.id) + ": GM grid " + std::to_string(gid) + " is on no shell element: boltnet ties an RBE2's GM grids to shell parts");
+      tie(owner[d.GridIndex(r.gn)], owner[g], g);
+    }
+  if (nties)
+    m.notes.push_back(std::to_string(nties) + " tie(s) (joints " + std::to_string(kTieJointBase + 1) + " to " + std::to_string(kTieJointBase + nties) + "): " + std::to_string(nshared) + " for grids shared by the shells of two properties, " + std::to_string(nties - nshared) +
+                      " for RBE2 GM grids; spring kn = kt = " + Num(options.tie_penalty * a11) + ", kr = " + Num(options.tie_penalty * d11) + " (penalty " + Num(options.tie_penalty) + " x the largest A11 and D11)");
+
+  // Constraints: grouped per part and component set into node sets "spc<components>" (every copy of
+  // a shared grid), enforced values per grid ("grid<id>"); a rigid part's on the part. Components
+  // are in the grid's CD system: a CD other than the basic axes is accepted where the components
+  // cover all three translations or rotations with value 0.
+  std::map<std::pair<int, DofSet>, std::vector<int>> fixed;
+  std::set<int> skipped;
+  const auto bc = [&](int part, const std::string &set, int node, int dof, ModelBCKind kind, double value) {
+    if (m.parts[part].rigid) m.bcs.push_back({part, "", {}, dof, kind, value});
+    else m.bcs.push_back({part, set, {node}, dof, kind, value});
+  };
+  for (const Constraint &c : spc) {
+    const Grid &g = d.grids[c.node];
+    if (owner[c.node] < 0) {
+      skipped.insert(g.id);
+      continue;
+    }
+    const Axes &a = g.cd_axes;
+    bool basic = true;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) basic = basic && std::fabs(a[i][j] - (i == j)) < 1e-12;
+    bool nonzero = false;
+    for (int i = 0; i < 6; ++i) nonzero = nonzero || ((c.dofs >> i & 1u) && c.value[i] != 0);
+    const DofSet tr = c.dofs & 7u, rot = (c.dofs >> 3) & 7u;
+    if (!basic && (nonzero || (tr != 0 && tr != 7) || (rot != 0 && rot != 7)))
+      Fail(d, g.src, "GRID", "grid " + std::to_string(g.id) + " (SPC components " + DofString(c.dofs) + "): its displacement system CD " + std::to_string(g.cd) + " is not the basic axes; boltnet constrains basic components (all three translations or rotations, fixed, are accepted in any system)");
+    std::vector<int> parts{owner[c.node]};
+    parts.insert(parts.end(), copies[c.node].begin(), copies[c.node].end());
+    for (int part : parts) {
+      const int node = local_node(part, c.node);
+      for (int i = 0; i < 6; ++i) {
+        if (!(c.dofs >> i & 1u)) continue;
+        if (c.value[i] != 0) bc(part, "grid" + std::to_string(g.id), node, i, ModelBCKind::Displacement, c.value[i]);
+        else if (m.parts[part].rigid) bc(part, "", 0, i, ModelBCKind::Fixed, 0);
+      }
+      DofSet zero = 0;
+      for (int i = 0; i < 6; ++i)
+        if ((c.dofs >> i & 1u) && c.value[i] == 0) zero |= 1u << i;
+      if (zero && !m.parts[part].rigid) fixed[{part, zero}].push_back(node);
+    }
+  }
+  for (const auto &[key, nodes] : fixed)
+    for (int i = 0; i < 6; ++i)
+      if (key.second >> i & 1u) m.bcs.push_back({key.first, "spc" + DofString(key.second), nodes, i, ModelBCKind::Fixed, 0});
+  if (!skipped.empty()) m.notes.push_back("subcase " + std::to_string(sc.id) + ": constraints on " + std::to_string(skipped.size()) + " grid(s) on no shell element and no joint skipped (first: grid " + std::to_string(*skipped.begin()) + ")");
+
+  // Loads: FORCE, MOMENT and PLOAD4 (as consistent nodal forces) per grid, in the basic system, on
+  // the grid's first part.
+  StaticLoad load = ExpandLoad(d, sc.load);
+  PressuresToNodal(d, load.pressures, load.nodal);
+  for (const NodalLoad &l : load.nodal) {
+    const Grid &g = d.grids[l.node];
+    bool any = false;
+    for (int i = 0; i < 3; ++i) any = any || l.force[i] != 0 || l.moment[i] != 0;
+    if (!any) continue;
+    if (owner[l.node] < 0) Fail(d, g.src, "GRID", "grid " + std::to_string(g.id) + " carries a load in subcase " + std::to_string(sc.id) + " (LOAD " + std::to_string(sc.load) + ") but is on no shell element and no joint: boltnet loads parts");
+    const int part = owner[l.node], node = local_node(part, l.node);
+    for (int i = 0; i < 6; ++i) {
+      const double v = i < 3 ? l.force[i] : l.moment[i - 3];
+      if (v != 0) bc(part, "grid" + std::to_string(g.id), node, i, ModelBCKind::Force, v);
+    }
+  }
+  return m;
+}
+
+} // namespace boltnet::nastran

@@ -1,0 +1,114 @@
+# Nastran decks run by the driver (docs/nastran.md, "From a deck to a model"), on decks written by
+# scripts/make-nastran-strips. Included by test/CMakeLists.txt (boltnet_expect, boltnet_compare_ranks).
+set(_nm ${BOLTNET_OUT}/nastran-model)
+set(_drv $<TARGET_FILE:boltnet_driver>)
+add_test(NAME make_nastran_strips COMMAND ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-nastran-strips ${_nm})
+set_tests_properties(make_nastran_strips PROPERTIES FIXTURES_SETUP nastran_strips)
+
+# boltnet_deck_run(NAME RANKS DECK ARGS...): the driver on a deck, results in ${BOLTNET_OUT}/NAME_npRANKS.
+function(boltnet_deck_run name ranks deck)
+  set(out ${BOLTNET_OUT}/${name}_np${ranks})
+  add_test(NAME run_${name}_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "steps converged" --match "There are no unused options" --
+            ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -nastran_deck ${deck}
+            -output_dir ${out} -options_left -malloc_debug -malloc_dump ${ARGN})
+  set_tests_properties(run_${name}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips
+    FIXTURES_SETUP ${name}_np${ranks} FAIL_REGULAR_EXPRESSION "PETSC ERROR;bytes [A-Za-z_0-9]+\\(\\) at ")
+endfunction()
+
+foreach(ranks 1 2)
+  # The strip deck (CQUAD4 and CTRIA3, SPC1, FORCE and MOMENT as consistent nodal loads), both
+  # subcases in one run, each in its own folder, against the exact constant-strain and
+  # constant-curvature solutions at every node (requirements: a deck becomes a model; several
+  # subcases per run). rtol 1e-8 as the scene strip's (test/triangle_tests.cmake).
+  boltnet_deck_run(nastran_strip ${ranks} ${_nm}/strip.bdf -load_max 1 -load_steps 1)
+  foreach(sub_load "1;tension" "2;bending")
+    list(GET sub_load 0 sub)
+    list(GET sub_load 1 load)
+    add_test(NAME nastran_strip_${load}_exact_np${ranks}
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_strip.py ${BOLTNET_OUT}/nastran_strip_np${ranks}/subcase-${sub} ${load} 72000 20 1.27 1e-8)
+    set_tests_properties(nastran_strip_${load}_exact_np${ranks} PROPERTIES FIXTURES_REQUIRED nastran_strip_np${ranks})
+  endforeach()
+
+  # The strip whose halves are two properties sharing the grids at x = 75 and whose end is loaded
+  # through an RBE2 (requirement: a grid of two property regions; rigid elements): the shared grids
+  # and the RBE2 become ties, penalty springs whose compliance is the only departure from the exact
+  # solution, so the error falls as 1/penalty: measured 4.3e-5 at the default 1000 and 4.3e-8 at 1e6.
+  foreach(penalty_rtol "1000;1e-4" "1e6;1e-7")
+    list(GET penalty_rtol 0 penalty)
+    list(GET penalty_rtol 1 rtol)
+    boltnet_deck_run(nastran_strip_tied_${penalty} ${ranks} ${_nm}/strip-tied.bdf -load_max 1 -load_steps 1 -nastran_tie_penalty ${penalty})
+    foreach(sub_load "1;tension" "2;bending")
+      list(GET sub_load 0 sub)
+      list(GET sub_load 1 load)
+      add_test(NAME nastran_strip_tied_${penalty}_${load}_np${ranks}
+        COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_strip.py ${BOLTNET_OUT}/nastran_strip_tied_${penalty}_np${ranks}/subcase-${sub} ${load} 72000 20 1.27 ${rtol})
+      set_tests_properties(nastran_strip_tied_${penalty}_${load}_np${ranks} PROPERTIES FIXTURES_REQUIRED nastran_strip_tied_${penalty}_np${ranks})
+    endforeach()
+  endforeach()
+
+  # The bolted lap deck (two PSHELL parts, two CBUSH with PBUSH stiffness) against the same lap
+  # written as a scene (generated plates, spring joints, node coupling), which reaches the model
+  # without the Nastran reader: joints.csv equal to round-off, per subcase (requirement: CBUSH
+  # become joints with their PBUSH stiffness; SPC and FORCE become conditions).
+  boltnet_deck_run(nastran_lap ${ranks} ${_nm}/lap.bdf -load_max 1 -load_steps 1)
+  # The fastener table turns both CBUSH into frictional macroelements of type 'fric', against the
+  # scene whose joints table names that type (requirement: a fastener table turns chosen fasteners
+  # into contact or frictional macroelements).
+  set(_fric -joint_fric_law friction -joint_fric_kt 5000 -joint_fric_kc 4000 -joint_fric_kn 1e5 -joint_fric_kr 1e6
+      -joint_fric_gap 0.02 -joint_fric_mu 0.2 -joint_fric_pretension 500 -load_max 1 -load_steps 4)
+  boltnet_deck_run(nastran_lap_fric ${ranks} ${_nm}/lap.bdf -nastran_subcase 1 -nastran_fasteners ${_nm}/lap-fasteners.csv ${_fric})
+  foreach(sub 1 2)
+    add_test(NAME run_nastran_lap_scene_${sub}_np${ranks}
+      COMMAND ${BOLTNET_EXPECT} --match "steps converged" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe ${_drv} -scene ${_nm}/lap.yaml
+              -scene_bcs ${_nm}/lap-${sub}.bcs.csv -output_dir ${BOLTNET_OUT}/nastran_lap_scene_${sub}_np${ranks} -load_max 1 -load_steps 1)
+    set_tests_properties(run_nastran_lap_scene_${sub}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips FIXTURES_SETUP nastran_lap_scene_${sub}_np${ranks})
+    add_test(NAME nastran_lap_${sub}_as_scene_np${ranks}
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_scene_${sub}_np${ranks}/joints.csv ${BOLTNET_OUT}/nastran_lap_np${ranks}/subcase-${sub}/joints.csv 1e-9)
+    set_tests_properties(nastran_lap_${sub}_as_scene_np${ranks} PROPERTIES FIXTURES_REQUIRED "nastran_lap_np${ranks};nastran_lap_scene_${sub}_np${ranks}")
+  endforeach()
+  add_test(NAME run_nastran_lap_fric_scene_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "steps converged" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe ${_drv} -scene ${_nm}/lap-fric.yaml
+            -scene_bcs ${_nm}/lap-1.bcs.csv -output_dir ${BOLTNET_OUT}/nastran_lap_fric_scene_np${ranks} ${_fric})
+  set_tests_properties(run_nastran_lap_fric_scene_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips FIXTURES_SETUP nastran_lap_fric_scene_np${ranks})
+  add_test(NAME nastran_lap_fric_as_scene_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_fric_scene_np${ranks}/joints.csv ${BOLTNET_OUT}/nastran_lap_fric_np${ranks}/subcase-1/joints.csv 1e-9)
+  set_tests_properties(nastran_lap_fric_as_scene_np${ranks} PROPERTIES FIXTURES_REQUIRED "nastran_lap_fric_np${ranks};nastran_lap_fric_scene_np${ranks}")
+endforeach()
+# A scene's nastran: section names the deck (relative to the scene) and the subcase: the same results.
+add_test(NAME run_nastran_lap_yaml_np1
+  COMMAND ${BOLTNET_EXPECT} --match "results in .*/subcase-2/" --match "There are no unused options" -- ${_drv} -scene ${_nm}/lap-deck.yaml
+          -output_dir ${BOLTNET_OUT}/nastran_lap_yaml_np1 -load_max 1 -load_steps 1 -options_left)
+set_tests_properties(run_nastran_lap_yaml_np1 PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips FIXTURES_SETUP nastran_lap_yaml_np1)
+add_test(NAME nastran_lap_yaml_same_np1
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_np1/subcase-2/joints.csv ${BOLTNET_OUT}/nastran_lap_yaml_np1/subcase-2/joints.csv 1e-12)
+set_tests_properties(nastran_lap_yaml_same_np1 PROPERTIES FIXTURES_REQUIRED "nastran_lap_np1;nastran_lap_yaml_np1")
+# Results do not depend on the number of ranks.
+foreach(run nastran_lap nastran_lap_fric)
+  foreach(sub 1 2)
+    if(run STREQUAL nastran_lap_fric AND sub EQUAL 2)
+      continue()
+    endif()
+    add_test(NAME ${run}_${sub}_ranks_1_vs_2
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/${run}_np1/subcase-${sub}/joints.csv ${BOLTNET_OUT}/${run}_np2/subcase-${sub}/joints.csv 1e-9)
+    set_tests_properties(${run}_${sub}_ranks_1_vs_2 PROPERTIES FIXTURES_REQUIRED "${run}_np1;${run}_np2")
+  endforeach()
+endforeach()
+
+# Bad input: a clear message naming the card or the option, non-zero exit, on 2 ranks.
+function(nastran_bad name)
+  boltnet_expect(${name} 2 --fail ${ARGN})
+  set_tests_properties(${name}_np2 PROPERTIES FIXTURES_REQUIRED "nastran_strips;nastran_wingbox")
+endfunction()
+nastran_bad(nastran_bad_bush_off_shell --match "bush-off-shell.bdf:[0-9]+: CBUSH 9: GB = grid 5 is on no shell element \\(CQUAD4/CTRIA3\\), is no RBE2's GN and has no SPC in subcase 1"
+  -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_nm}/bush-off-shell.bdf)
+nastran_bad(nastran_bad_rbe2_partial --match "rbe2-partial.bdf:[0-9]+: RBE2 8: CM = 123: boltnet ties all six components"
+  -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_nm}/rbe2-partial.bdf)
+nastran_bad(nastran_bad_subcase --match "error: -nastran_subcase 7: .*lap.bdf: no subcase 7 \\(the deck has subcase\\(s\\) 1, 2\\)"
+  -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_nm}/lap.bdf -nastran_subcase 7)
+nastran_bad(nastran_bad_fastener_rule --match "lap-fasteners.csv line 2: no CBUSH or CFAST of the deck matches"
+  -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_nm}/strip.bdf -nastran_fasteners ${_nm}/lap-fasteners.csv)
+# The wing box of scripts/make-nastran-wingbox averages its tip onto a load point (RBE3): refused,
+# naming the card.
+nastran_bad(nastran_bad_rbe3 --match "wingbox-small-mesh.bdf:[0-9]+: RBE3 [0-9]+: the deck has 1 RBE3 card\\(s\\). interpolation elements are not turned into a boltnet model"
+  -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${BOLTNET_OUT}/nastran-wingbox/wingbox-small.bdf)
