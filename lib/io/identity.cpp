@@ -70,10 +70,10 @@ void AddParams(Hasher &h, const Params &p)
   for (double v : {p.kn, p.kt, p.kr, p.kc, p.kg, p.gap, p.mu, p.nf, p.pretension, p.clamp_coupling, p.offset[0], p.offset[1]}) h.Add(v);
 }
 
-void AddMesh(Hasher &h, const QuadMesh &m)
+void AddMesh(Hasher &h, const ShellMesh &m)
 {
   h.Add(m.x);
-  h.Add(m.quads);
+  h.Add(m.elems);
   for (const auto &[name, nodes] : m.node_sets) {
     h.Add(name);
     h.Add(nodes);
