@@ -112,6 +112,20 @@ static PetscErrorCode TestDescription(BoltnetAssembly a)
   EXPECT(BoltnetAssemblyAddNodeSet(a, 0, "edge", -2, nodes), PETSC_ERR_ARG_OUTOFRANGE, "BoltnetAssemblyAddNodeSet", "argument 4 (n) = -2");
   EXPECT(BoltnetAssemblyAddNodeSet(a, 0, "edge", 2, NULL), PETSC_ERR_ARG_NULL, "BoltnetAssemblyAddNodeSet", "argument 5 (nodes)");
 
+  /* A refused node set leaves no set behind: a boundary condition on it is then refused as on a set
+     that was never given (on a second assembly, so that this one stays the two rigid patches). */
+  {
+    BoltnetAssembly b;
+    const PetscInt  bad[2] = {0, 99};
+    PetscCall(BoltnetAssemblyCreate(PETSC_COMM_WORLD, &b));
+    PetscCall(BoltnetAssemblyAddShellPatch(b, 5, 4, xyz, 1, quad, 7e4, 0.3, 2));
+    EXPECT(BoltnetAssemblyAddNodeSet(b, 5, "edge", 2, bad), PETSC_ERR_USER_INPUT, "Node set 'edge' of patch 5", "node 99 does not exist");
+    EXPECT(BoltnetAssemblyAddBCOnSet(b, 5, "edge", -1, BOLTNET_BC_FIXED, 0), PETSC_ERR_USER_INPUT, "patch 5", "no node set 'edge'");
+    PetscCall(BoltnetAssemblyAddNodeSet(b, 5, "edge", 2, nodes));
+    PetscCall(BoltnetAssemblyAddBCOnSet(b, 5, "edge", -1, BOLTNET_BC_FIXED, 0));
+    PetscCall(BoltnetAssemblyDestroy(&b));
+  }
+
   EXPECT(BoltnetAssemblySetFromOptions(NULL), PETSC_ERR_ARG_NULL, "BoltnetAssemblySetFromOptions", "argument 1 (BoltnetAssembly)");
   EXPECT(BoltnetAssemblySetUp(NULL), PETSC_ERR_ARG_NULL, "BoltnetAssemblySetUp", "argument 1 (BoltnetAssembly)");
   /* Results before set-up: refused, naming the order. */

@@ -244,11 +244,14 @@ PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly a, PetscInt patch, cons
     const PetscInt pos = a->model.Find(patch);
     ShellPart     *sp  = a->model.shells.count(pos) ? &a->model.shells[pos] : nullptr;
     PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
-    std::vector<int> &set = sp->mesh.node_sets[name];
+    std::vector<int> add; // checked in full before the set changes: a refused call changes nothing
+    add.reserve((size_t)n);
     for (PetscInt i = 0; i < n; ++i) {
       PetscCheck(nodes[i] >= 0 && nodes[i] < (PetscInt)sp->mesh.x.size(), a->comm, PETSC_ERR_USER_INPUT, "Node set '%s' of patch %" PetscInt_FMT ": node %" PetscInt_FMT " does not exist", name, patch, nodes[i]);
-      set.push_back((int)nodes[i]);
+      add.push_back((int)nodes[i]);
     }
+    std::vector<int> &set = sp->mesh.node_sets[name];
+    set.insert(set.end(), add.begin(), add.end());
     PetscFunctionReturn(0);
   }));
   PetscFunctionReturn(0);
