@@ -109,6 +109,20 @@ boltnet_mpi_test(test_api_consistent_tangent 2 $<TARGET_FILE:test_api>
 set_tests_properties(test_api_consistent_tangent_np2 PROPERTIES FAIL_REGULAR_EXPRESSION "${BOLTNET_TEST_FAIL_REGEX}")
 
 # ---------------------------------------------------------------------------------------------------
+# test_capi_errors: boltnet.h only. Requirement: every entry point of the C API refuses a NULL
+# pointer, a negative count or an id or count out of range with a PETSc error naming the function
+# and the argument, before it allocates; std::bad_alloc inside the library (a load path of 10^6
+# factors under a lowered RLIMIT_AS) is PETSC_ERR_MEM naming the function, not std::terminate; and
+# the assembly still solves to the closed form afterwards. At 1, 2 and 3 ranks, no PETSc allocation
+# leaked (the work vector of the load path that ran out of memory included).
+add_executable(test_capi_errors test_capi_errors.c)
+target_link_libraries(test_capi_errors PRIVATE boltnet m)
+foreach(ranks 1 2 3)
+  boltnet_mpi_test(test_capi_errors ${ranks} $<TARGET_FILE:test_capi_errors> -options_left -malloc_debug -malloc_dump)
+  set_tests_properties(test_capi_errors_np${ranks} PROPERTIES FAIL_REGULAR_EXPRESSION "${BOLTNET_TEST_FAIL_REGEX}")
+endforeach()
+
+# ---------------------------------------------------------------------------------------------------
 # check_install: install into a temporary prefix, build test_api.c against the installed package
 # through pkg-config and through find_package(boltnet), run both; the installed plugin and driver
 # find the installed library, and foreign_snes uses the installed plugin.

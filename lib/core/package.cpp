@@ -1,5 +1,6 @@
 // Package initialisation: registers boltnet's PETSc types once per PetscInitialize.
 #include "boltnet.h"
+#include "core/check.hpp"
 #include "core/compat.h"
 #include "core/log.hpp"
 #include "joint/law.hpp"
@@ -55,8 +56,9 @@ PetscErrorCode BoltnetInitializePackage(void)
 PetscErrorCode BoltnetJointParamsSetDefault(BoltnetLaw law, BoltnetJointParams *p)
 {
   PetscFunctionBeginUser;
-  PetscCheck(p, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL, "Null BoltnetJointParams");
-  const boltnet::Params d; // the library's defaults
+  BoltnetCheckPointer(p, 2, "BoltnetJointParams *");
+  PetscCheck(law >= BOLTNET_LAW_SPRING && law <= BOLTNET_LAW_FRICTION, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 1 (law) = %d is not a BoltnetLaw", __func__, (int)law);
+  const boltnet::Params d; // the library's defaults (plain numbers: nothing here throws)
   p->law            = law;
   p->kn             = d.kn;
   p->kt             = d.kt;
@@ -73,6 +75,7 @@ PetscErrorCode BoltnetJointParamsSetDefault(BoltnetLaw law, BoltnetJointParams *
   PetscFunctionReturn(0);
 }
 
+// "unknown" for a value that is no BoltnetJointState (never NULL, never an error).
 const char *BoltnetJointStateName(BoltnetJointState s)
 {
   return boltnet::stateName(static_cast<boltnet::State>(s));

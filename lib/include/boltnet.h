@@ -17,7 +17,12 @@
      BoltnetAssemblyGetJointResult(a, 0, force, jump, &state);
      BoltnetAssemblyDestroy(&a);
 
-   Units are the caller's; the shipped scenes use N, mm, MPa. Dof order per node: ux uy uz rx ry rz. */
+   Units are the caller's; the shipped scenes use N, mm, MPa. Dof order per node: ux uy uz rx ry rz.
+
+   Errors (docs/architecture.md, "Errors"): every function checks its arguments before it allocates
+   (a NULL pointer, a negative id, a count out of range: a PETSc error naming the function and the
+   argument) and returns a C++ exception inside boltnet as a PETSc error (PETSC_ERR_MEM for
+   std::bad_alloc), never std::terminate. A refused call leaves the assembly unchanged. */
 #ifndef BOLTNET_H
 #define BOLTNET_H
 

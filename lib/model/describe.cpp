@@ -1,10 +1,13 @@
 // The description part of the public API of boltnet.h: parts, joints and boundary conditions go
 // into the assembly's model (model/model.hpp), unchecked against each other until set-up.
 #include "network/assembly.hpp"
+#include "core/check.hpp"
 #include "core/guard.hpp"
+#include "io/limits.hpp"
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 using namespace boltnet;
 
@@ -32,26 +35,46 @@ PetscErrorCode JointFrame(MPI_Comm comm, PetscInt id, const PetscReal n[3], cons
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CheckNotSetUp(BoltnetAssembly a)
+PetscErrorCode CheckNotSetUp(BoltnetAssembly a, const char *where)
 {
   PetscFunctionBeginUser;
-  PetscCheck(!a->net.dm, a->comm, PETSC_ERR_ORDER, "The assembly is already set up: describe it before BoltnetAssemblySetUp()");
+  PetscCheck(!a->net.dm, a->comm, PETSC_ERR_ORDER, "%s: the assembly is already set up: describe it before BoltnetAssemblySetUp()", where);
+  PetscFunctionReturn(0);
+}
+
+// Ids of patches and joints: what a scene accepts (io/limits.hpp), so that a negative id (a typo, or
+// an unset variable) is refused where it is given.
+PetscErrorCode CheckId(BoltnetAssembly a, const char *where, int argnum, const char *name, PetscInt id)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(id >= 0 && id <= limits::kMaxId, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument %d (%s) = %" PetscInt_FMT " is not an id in 0..%lld", where, argnum, name, id, (long long)limits::kMaxId);
   PetscFunctionReturn(0);
 }
 
 } // namespace
 
+// Every entry point below: the arguments checked (core/check.hpp), then the work inside Guard()
+// (core/guard.hpp), which turns a C++ exception (std::bad_alloc from the model's vectors) into a
+// PETSc error naming the function.
+
 PetscErrorCode BoltnetAssemblyAddRigidPatch(BoltnetAssembly a, PetscInt id, const PetscReal x[3])
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckNotSetUp(a));
-  a->model.parts.push_back(PartDesc{id, PatchKind::Rigid, {x ? x[0] : 0.0, x ? x[1] : 0.0, x ? x[2] : 0.0}});
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(CheckNotSetUp(a, __func__));
+  PetscCall(CheckId(a, __func__, 2, "id", id));
+  PetscCall(Guard(__func__, [&] {
+    a->model.parts.push_back(PartDesc{id, PatchKind::Rigid, {x ? x[0] : 0.0, x ? x[1] : 0.0, x ? x[2] : 0.0}});
+    return PetscErrorCode(0);
+  }));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *bp, const PetscReal normal[3], const PetscReal t1[3])
 {
   PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(bp, 5, "BoltnetJointParams");
   PetscCall(BoltnetAssemblyAddJointAt(a, id, patch_a, patch_b, bp, normal, t1, nullptr));
   PetscFunctionReturn(0);
 }
@@ -59,53 +82,83 @@ PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly a, PetscInt id, PetscInt 
 PetscErrorCode BoltnetAssemblyAddJointAt(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *bp, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3])
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckNotSetUp(a));
-  PetscCheck(bp, a->comm, PETSC_ERR_ARG_NULL, "Joint %" PetscInt_FMT ": null parameters", id);
-  JointDesc j{};
-  j.id     = id;
-  j.part_a = patch_a;
-  j.part_b = patch_b;
-  for (int k = 0; k < 3; ++k) j.x[k] = x ? x[k] : 0.0;
-  j.positioned = x != nullptr;
-  Params &p           = j.params;
-  PetscCheck(bp->law >= BOLTNET_LAW_SPRING && bp->law <= BOLTNET_LAW_FRICTION, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": unknown law %d", id, (int)bp->law);
-  p.law            = static_cast<Law>(bp->law);
-  p.kn             = bp->kn;
-  p.kt             = bp->kt;
-  p.kr             = bp->kr;
-  p.kc             = bp->kc;
-  p.kg             = bp->kg;
-  p.gap            = bp->gap;
-  p.mu             = bp->mu;
-  p.nf             = bp->nf;
-  p.pretension     = bp->pretension;
-  p.clamp_coupling = bp->clamp_coupling;
-  p.offset[0]      = bp->offset[0];
-  p.offset[1]      = bp->offset[1];
-  const std::string bad = validate(p);
-  PetscCheck(bad.empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " (%s law): %s", id, lawName(p.law), bad.c_str());
-  const PetscReal ndef[3] = {0, 0, 1}, tdef[3] = {1, 0, 0};
-  PetscCall(JointFrame(a->comm, id, normal ? normal : ndef, t1 ? t1 : tdef, j.R.data()));
-  a->model.joints.push_back(j);
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(bp, 5, "BoltnetJointParams");
+  PetscCall(CheckNotSetUp(a, __func__));
+  PetscCall(CheckId(a, __func__, 2, "id", id));
+  PetscCall(CheckId(a, __func__, 3, "patch_a", patch_a));
+  PetscCall(CheckId(a, __func__, 4, "patch_b", patch_b));
+  PetscCall(Guard(__func__, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    JointDesc j{};
+    j.id     = id;
+    j.part_a = patch_a;
+    j.part_b = patch_b;
+    for (int k = 0; k < 3; ++k) j.x[k] = x ? x[k] : 0.0;
+    j.positioned = x != nullptr;
+    Params &p    = j.params;
+    PetscCheck(bp->law >= BOLTNET_LAW_SPRING && bp->law <= BOLTNET_LAW_FRICTION, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": unknown law %d", id, (int)bp->law);
+    p.law            = static_cast<Law>(bp->law);
+    p.kn             = bp->kn;
+    p.kt             = bp->kt;
+    p.kr             = bp->kr;
+    p.kc             = bp->kc;
+    p.kg             = bp->kg;
+    p.gap            = bp->gap;
+    p.mu             = bp->mu;
+    p.nf             = bp->nf;
+    p.pretension     = bp->pretension;
+    p.clamp_coupling = bp->clamp_coupling;
+    p.offset[0]      = bp->offset[0];
+    p.offset[1]      = bp->offset[1];
+    const std::string bad = validate(p);
+    PetscCheck(bad.empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " (%s law): %s", id, lawName(p.law), bad.c_str());
+    const PetscReal ndef[3] = {0, 0, 1}, tdef[3] = {1, 0, 0};
+    PetscCall(JointFrame(a->comm, id, normal ? normal : ndef, t1 ? t1 : tdef, j.R.data()));
+    a->model.joints.push_back(j);
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
+
+namespace {
+PetscErrorCode AddBC(BoltnetAssembly a, const char *where, PetscInt patch, const char set[], PetscInt dof, BoltnetBCKind kind, PetscReal value)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a, where));
+  PetscCall(CheckId(a, where, 2, "patch", patch));
+  PetscCheck(dof >= -1 && dof < 6, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": dof %" PetscInt_FMT " is not in 0..5 (ux uy uz rx ry rz) or -1 (all)", patch, dof);
+  PetscCheck(kind >= BOLTNET_BC_FIXED && kind <= BOLTNET_BC_FORCE, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": unknown kind %d", patch, (int)kind);
+  PetscCheck(std::isfinite(value), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": value is not finite", patch);
+  PetscCall(Guard(where, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (set && set[0]) {
+      const PetscInt   pos = a->model.Find(patch);
+      const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;
+      PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on set '%s': patch %" PetscInt_FMT " is not a shell patch", set, patch);
+      PetscCheck(sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
+    }
+    a->model.bcs.push_back(BCDesc{patch, set ? set : "", dof, kind, value});
+    PetscFunctionReturn(0);
+  }));
+  PetscFunctionReturn(0);
+}
+} // namespace
 
 PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly a, PetscInt patch, PetscInt dof, BoltnetBCKind kind, PetscReal value)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckNotSetUp(a));
-  PetscCheck(dof >= -1 && dof < 6, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": dof %" PetscInt_FMT " is not in 0..5 (ux uy uz rx ry rz) or -1 (all)", patch, dof);
-  PetscCheck(kind >= BOLTNET_BC_FIXED && kind <= BOLTNET_BC_FORCE, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": unknown kind %d", patch, (int)kind);
-  PetscCheck(std::isfinite(value), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": value is not finite", patch);
-  a->model.bcs.push_back(BCDesc{patch, "", dof, kind, value});
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(AddBC(a, __func__, patch, nullptr, dof, kind, value));
   PetscFunctionReturn(0);
 }
 
 namespace boltnet {
+// Called inside a Guard() (the C API's AddShellPatch below, the scene reader's).
 PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material)
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckNotSetUp(a));
+  PetscCall(CheckNotSetUp(a, "AssemblyAddShell"));
   PetscCheck(!mesh.elems.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one element", id);
   const PetscInt pos = (PetscInt)a->model.parts.size();
   a->model.parts.push_back(PartDesc{id, PatchKind::Shell, mesh.x[0]});
@@ -119,30 +172,44 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh
 namespace {
 // The shell patch of the C API: 4 entries per element, a triangle's fourth -1 where triangles are
 // allowed (BoltnetAssemblyAddShellPatchElements), every node in range and named once per element.
-PetscErrorCode AddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t, bool triangles)
+// The counts are bounded by what a scene accepts (io/limits.hpp) before anything is allocated.
+PetscErrorCode AddShellPatch(BoltnetAssembly a, const char *where, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t, bool triangles)
 {
-  ShellMesh            mesh;
-  shell::ShellMaterial mat;
-  const char          *what = triangles ? "element" : "quadrangle";
+  const char *what = triangles ? "element" : "quadrangle";
   PetscFunctionBeginUser;
-  PetscCheck(nnodes >= (triangles ? 3 : 4) && nelems >= 1 && xyz && elems, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one %s (it has %" PetscInt_FMT " nodes and %" PetscInt_FMT " elements)", id, what, nnodes, nelems);
-  for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
-  for (PetscInt e = 0; e < nelems; ++e) {
-    MeshElement    q  = {-1, -1, -1, -1};
-    const PetscInt nn = triangles && elems[4 * e + 3] == -1 ? 3 : 4;
-    for (int k = 0; k < nn; ++k) {
-      const PetscInt v = elems[4 * e + k];
-      PetscCheck(v >= 0 && v < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT "%s", id, what, e, v, nnodes - 1, triangles && k < 3 ? "" : triangles ? " (or -1: a triangle)" : "");
-      for (int j = 0; j < k; ++j) PetscCheck(q[j] != v, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT " twice", id, what, e, v);
-      q[k] = (int)v;
+  PetscCall(CheckNotSetUp(a, where));
+  PetscCall(CheckId(a, where, 2, "id", id));
+  PetscCheck(nnodes >= 0 && nnodes <= limits::kMaxSceneNodes, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 3 (nnodes) = %" PetscInt_FMT " is not a node count in 0..%lld", where, nnodes, (long long)limits::kMaxSceneNodes);
+  PetscCheck(nelems >= 0 && nelems <= 2 * limits::kMaxSceneNodes, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 5 (%s) = %" PetscInt_FMT " is not an element count in 0..%lld", where, triangles ? "nelems" : "nquads", nelems, (long long)(2 * limits::kMaxSceneNodes));
+  PetscCheck(nnodes >= (triangles ? 3 : 4) && nelems >= 1, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one %s (it has %" PetscInt_FMT " nodes and %" PetscInt_FMT " elements)", id, what, nnodes, nelems);
+  BoltnetCheckPointerIn(where, xyz, 4, "xyz");
+  BoltnetCheckPointerIn(where, elems, 6, triangles ? "elems" : "quads");
+  PetscCall(Guard(where, [&]() -> PetscErrorCode {
+    ShellMesh            mesh;
+    shell::ShellMaterial mat;
+    PetscFunctionBeginUser;
+    try {
+      mat = shell::IsotropicMaterial(E, nu, t);
+    } catch (const std::invalid_argument &e) {
+      SETERRQ(a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s", id, e.what());
     }
-    mesh.elems.push_back(q);
-  }
-  PetscCall(Guard(a->comm, [&] {
-    mat = shell::IsotropicMaterial(E, nu, t);
-    return PetscErrorCode(0);
+    mesh.x.reserve((size_t)nnodes);
+    mesh.elems.reserve((size_t)nelems);
+    for (PetscInt i = 0; i < nnodes; ++i) mesh.x.push_back({xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]});
+    for (PetscInt e = 0; e < nelems; ++e) {
+      MeshElement    q  = {-1, -1, -1, -1};
+      const PetscInt nn = triangles && elems[4 * e + 3] == -1 ? 3 : 4;
+      for (int k = 0; k < nn; ++k) {
+        const PetscInt v = elems[4 * e + k];
+        PetscCheck(v >= 0 && v < nnodes, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT ", not in 0..%" PetscInt_FMT "%s", id, what, e, v, nnodes - 1, triangles && k < 3 ? "" : triangles ? " (or -1: a triangle)" : "");
+        for (int j = 0; j < k; ++j) PetscCheck(q[j] != v, a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": %s %" PetscInt_FMT " names node %" PetscInt_FMT " twice", id, what, e, v);
+        q[k] = (int)v;
+      }
+      mesh.elems.push_back(q);
+    }
+    PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
+    PetscFunctionReturn(0);
   }));
-  PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
   PetscFunctionReturn(0);
 }
 } // namespace
@@ -150,43 +217,50 @@ PetscErrorCode AddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, co
 PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nquads, const PetscInt quads[], PetscReal E, PetscReal nu, PetscReal t)
 {
   PetscFunctionBeginUser;
-  PetscCall(AddShellPatch(a, id, nnodes, xyz, nquads, quads, E, nu, t, false));
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(AddShellPatch(a, __func__, id, nnodes, xyz, nquads, quads, E, nu, t, false));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BoltnetAssemblyAddShellPatchElements(BoltnetAssembly a, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t)
 {
   PetscFunctionBeginUser;
-  PetscCall(AddShellPatch(a, id, nnodes, xyz, nelems, elems, E, nu, t, true));
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(AddShellPatch(a, __func__, id, nnodes, xyz, nelems, elems, E, nu, t, true));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly a, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[])
 {
   PetscFunctionBeginUser;
-  PetscCall(CheckNotSetUp(a));
-  const PetscInt pos = a->model.Find(patch);
-  ShellPart     *sp  = a->model.shells.count(pos) ? &a->model.shells[pos] : nullptr;
-  PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
-  std::vector<int> &set = sp->mesh.node_sets[name];
-  for (PetscInt i = 0; i < n; ++i) {
-    PetscCheck(nodes[i] >= 0 && nodes[i] < (PetscInt)sp->mesh.x.size(), a->comm, PETSC_ERR_USER_INPUT, "Node set '%s' of patch %" PetscInt_FMT ": node %" PetscInt_FMT " does not exist", name, patch, nodes[i]);
-    set.push_back((int)nodes[i]);
-  }
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(name, 3, "name");
+  PetscCall(CheckNotSetUp(a, __func__));
+  PetscCall(CheckId(a, __func__, 2, "patch", patch));
+  PetscCheck(n >= 0 && n <= limits::kMaxSceneNodes, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 4 (n) = %" PetscInt_FMT " is not a node count in 0..%lld", __func__, n, (long long)limits::kMaxSceneNodes);
+  if (n > 0) BoltnetCheckPointer(nodes, 5, "nodes");
+  PetscCall(Guard(__func__, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    const PetscInt pos = a->model.Find(patch);
+    ShellPart     *sp  = a->model.shells.count(pos) ? &a->model.shells[pos] : nullptr;
+    PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
+    std::vector<int> add; // checked in full before the set changes: a refused call changes nothing
+    add.reserve((size_t)n);
+    for (PetscInt i = 0; i < n; ++i) {
+      PetscCheck(nodes[i] >= 0 && nodes[i] < (PetscInt)sp->mesh.x.size(), a->comm, PETSC_ERR_USER_INPUT, "Node set '%s' of patch %" PetscInt_FMT ": node %" PetscInt_FMT " does not exist", name, patch, nodes[i]);
+      add.push_back((int)nodes[i]);
+    }
+    std::vector<int> &set = sp->mesh.node_sets[name];
+    set.insert(set.end(), add.begin(), add.end());
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BoltnetAssemblyAddBCOnSet(BoltnetAssembly a, PetscInt patch, const char set[], PetscInt dof, BoltnetBCKind kind, PetscReal value)
 {
   PetscFunctionBeginUser;
-  PetscCall(BoltnetAssemblyAddBC(a, patch, dof, kind, value));
-  if (set && set[0]) {
-    const PetscInt   pos = a->model.Find(patch);
-    const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;
-    PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on set '%s': patch %" PetscInt_FMT " is not a shell patch", set, patch);
-    PetscCheck(sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
-    a->model.bcs.back().set = set;
-  }
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(AddBC(a, __func__, patch, set, dof, kind, value));
   PetscFunctionReturn(0);
 }
-

@@ -1,5 +1,8 @@
 // The public assembly API of boltnet.h: create and destroy, options, set-up, results. The
-// description calls are in model/describe.cpp.
+// description calls are in model/describe.cpp. Each entry point checks its arguments
+// (core/check.hpp) and runs what can throw (new, std::vector, std::string) inside Guard()
+// (core/guard.hpp): a C++ exception becomes a PETSc error naming the function.
+#include "core/check.hpp"
 #include "core/guard.hpp"
 #include "network/internal.hpp"
 
@@ -9,12 +12,21 @@
 
 using namespace boltnet;
 
+namespace {
+PetscErrorCode SetFromOptions(BoltnetAssembly a);
+}
+
 PetscErrorCode BoltnetAssemblyCreate(MPI_Comm comm, BoltnetAssembly *a)
 {
   PetscFunctionBeginUser;
-  PetscCheck(a, comm, PETSC_ERR_ARG_NULL, "Null BoltnetAssembly pointer");
+  BoltnetCheckPointer(a, 2, "BoltnetAssembly *");
+  *a = nullptr;
+  PetscCheck(comm != MPI_COMM_NULL, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: argument 1 (comm) is MPI_COMM_NULL", __func__);
   PetscCall(BoltnetInitializePackage());
-  *a = new _p_BoltnetAssembly();
+  PetscCall(Guard(__func__, [&] {
+    *a = new _p_BoltnetAssembly();
+    return PetscErrorCode(0);
+  }));
   PetscCallMPI(MPI_Comm_dup(comm, &(*a)->comm));
   PetscCallMPI(MPI_Comm_rank((*a)->comm, &(*a)->rank));
   PetscCallMPI(MPI_Comm_size((*a)->comm, &(*a)->size));
@@ -41,17 +53,31 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
 PetscErrorCode BoltnetAssemblySetOptionsPrefix(BoltnetAssembly a, const char prefix[])
 {
   PetscFunctionBeginUser;
-  a->prefix = prefix ? prefix : "";
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(Guard(__func__, [&] {
+    a->prefix = prefix ? prefix : "";
+    return PetscErrorCode(0);
+  }));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
+{
+  PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCall(SetFromOptions(a));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+PetscErrorCode SetFromOptions(BoltnetAssembly a)
 {
   AssemblyOptions &o        = a->opt;
   const char      *tangents[] = {"paper", "consistent"};
   PetscInt         t          = static_cast<PetscInt>(o.tangent);
   PetscInt         ct         = static_cast<PetscInt>(o.coupling_type);
   PetscFunctionBeginUser;
+  // No C++ allocation here: PETSc's options only.
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet solver options", "boltnet");
   PetscCall(PetscOptionsEList("-joint_tangent", "Joint tangent in the Jacobian: the paper's state-switched one or the consistent one", "BoltnetAssemblySetFromOptions", tangents, 2, tangents[t], &t, nullptr));
   PetscCall(PetscOptionsInt("-load_max_cuts", "Step cut-backs (halvings) allowed per load step before the solve stops", "BoltnetAssemblySolveLoadPath", o.max_cuts, &o.max_cuts, nullptr));
@@ -80,20 +106,28 @@ PetscErrorCode BoltnetAssemblySetFromOptions(BoltnetAssembly a)
   o.setfromoptions_called = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
+} // namespace
 
 PetscErrorCode BoltnetAssemblySetUp(BoltnetAssembly a)
 {
   PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
   if (a->net.dm) PetscFunctionReturn(0);
-  if (!a->opt.setfromoptions_called) PetscCall(BoltnetAssemblySetFromOptions(a));
-  PetscCall(AssemblyBuildNetwork(a));
-  PetscCall(AssemblySetUpSolver(a));
+  if (!a->opt.setfromoptions_called) PetscCall(SetFromOptions(a));
+  PetscCall(Guard(__func__, [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(AssemblyBuildNetwork(a));
+    PetscCall(AssemblySetUpSolver(a));
+    PetscFunctionReturn(0);
+  }));
   PetscFunctionReturn(0);
 }
 
 PetscErrorCode BoltnetAssemblyGetDM(BoltnetAssembly a, DM *dm)
 {
   PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(dm, 2, "DM *");
   *dm = a->net.dm;
   PetscFunctionReturn(0);
 }
@@ -101,6 +135,8 @@ PetscErrorCode BoltnetAssemblyGetDM(BoltnetAssembly a, DM *dm)
 PetscErrorCode BoltnetAssemblyGetSNES(BoltnetAssembly a, SNES *snes)
 {
   PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(snes, 2, "SNES *");
   *snes = a->snes;
   PetscFunctionReturn(0);
 }
@@ -108,23 +144,32 @@ PetscErrorCode BoltnetAssemblyGetSNES(BoltnetAssembly a, SNES *snes)
 PetscErrorCode BoltnetAssemblyGetLoadFactor(BoltnetAssembly a, PetscReal *lambda)
 {
   PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(lambda, 2, "PetscReal *");
   *lambda = a->lambda;
   PetscFunctionReturn(0);
 }
 
+// force, jump and state may be NULL (that result is not wanted).
 PetscErrorCode BoltnetAssemblyGetJointResult(BoltnetAssembly a, PetscInt id, PetscReal force[6], PetscReal jump[6], BoltnetJointState *state)
 {
-  std::vector<JointRecord> rec;
-  PetscFunctionBeginUser;
-  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() first");
-  PetscCall(AssemblyGatherRecords(a, rec));
   JointRecord found{};
   PetscInt    ok = 0;
-  for (const JointRecord &r : rec)
-    if (r.joint == id) {
-      found = r;
-      ok    = 1;
-    }
+  PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "%s: call BoltnetAssemblySetUp() first", __func__);
+  PetscCheck(id >= 0, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 2 (id) = %" PetscInt_FMT " is not a joint id (ids are >= 0)", __func__, id);
+  PetscCall(Guard(__func__, [&]() -> PetscErrorCode {
+    std::vector<JointRecord> rec;
+    PetscFunctionBeginUser;
+    PetscCall(AssemblyGatherRecords(a, rec));
+    for (const JointRecord &r : rec)
+      if (r.joint == id) {
+        found = r;
+        ok    = 1;
+      }
+    PetscFunctionReturn(0);
+  }));
   PetscCallMPI(MPI_Bcast(&ok, 1, MPIU_INT, 0, a->comm));
   PetscCheck(ok, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "No joint with id %" PetscInt_FMT, id);
   PetscCallMPI(MPI_Bcast(&found, sizeof(JointRecord), MPI_BYTE, 0, a->comm));
@@ -141,12 +186,15 @@ PetscErrorCode BoltnetAssemblyGetJointResult(BoltnetAssembly a, PetscInt id, Pet
 PetscErrorCode BoltnetAssemblyGetPatchDisplacement(BoltnetAssembly a, PetscInt patch, PetscReal u[6])
 {
   PetscFunctionBeginUser;
-  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() first");
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  BoltnetCheckPointer(u, 3, "u");
+  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "%s: call BoltnetAssemblySetUp() first", __func__);
+  PetscCheck(patch >= 0, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 2 (patch) = %" PetscInt_FMT " is not a patch id (ids are >= 0)", __func__, patch);
   PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, glob[7];
   Vec                Xl;
   const PetscScalar *x;
   PetscCall(GetLocalX(a, a->X, &Xl, &x));
-  PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
+  PetscCall(Collective(a->comm, __func__, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     for (const OwnedPatch &op : a->patches.owned) {
       if (a->layout.patches[op.index].id != patch) continue;

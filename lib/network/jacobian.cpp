@@ -321,7 +321,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
 
 PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 {
-  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyFormJacobianImpl(snes, X, J, P, ctx); });
+  return Guard("AssemblyFormJacobian (SNES Jacobian)", [&] { return AssemblyFormJacobianImpl(snes, X, J, P, ctx); });
 }
 
 } // namespace boltnet

@@ -38,7 +38,7 @@ static PetscErrorCode AssemblyCountStateChangesImpl(SNES snes, Vec ref, Vec X, P
 
 PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nchanged, void *ctx)
 {
-  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyCountStateChangesImpl(snes, ref, X, nchanged, ctx); });
+  return Guard("AssemblyCountStateChanges (line search state function)", [&] { return AssemblyCountStateChangesImpl(snes, ref, X, nchanged, ctx); });
 }
 
 PetscErrorCode AssemblyStateCounts(BoltnetAssembly a, Vec X, PetscInt counts[5])
@@ -131,7 +131,19 @@ PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord>
   JointSet                &js = a->joints;
   std::vector<JointRecord> mine;
   PetscFunctionBeginUser;
-  if (js.accepted.size() != js.size()) PetscCall(AssemblyEvaluateJoints(a, a->X, js.accepted, &js.accepted_jump, true)); // before the first step
+  // Before the first step no joint has an accepted state yet: evaluate them at X. GetLocalX() is
+  // collective, so every rank takes part when any rank needs it (a rank may own no joint at all).
+  PetscBool need = js.accepted.size() != js.size() ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &need, 1, MPIU_BOOL, MPI_LOR, a->comm));
+  if (need) {
+    std::vector<Response> fresh;
+    std::vector<Vec6>     jumps;
+    PetscCall(AssemblyEvaluateJoints(a, a->X, fresh, &jumps, true));
+    if (js.accepted.size() != js.size()) {
+      js.accepted      = std::move(fresh);
+      js.accepted_jump = std::move(jumps);
+    }
+  }
   for (size_t k = 0; k < js.size(); ++k) {
     const Response &re = js.accepted[k];
     const Vec6     &du = js.accepted_jump[k];

@@ -140,7 +140,7 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
 
 PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx)
 {
-  return Guard(PetscObjectComm((PetscObject)snes), [&] { return AssemblyFormFunctionImpl(snes, X, F, ctx); });
+  return Guard("AssemblyFormFunction (SNES function)", [&] { return AssemblyFormFunctionImpl(snes, X, F, ctx); });
 }
 
 } // namespace boltnet

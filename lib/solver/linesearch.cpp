@@ -37,6 +37,7 @@
 // whenever they are composed and whatever the order of SNESSetFromOptions and SNESLineSearchSetType.
 #include "boltnet.h"
 #include "core/compat.h"
+#include "core/check.hpp"
 #include "core/guard.hpp"
 
 #include <petsc/private/linesearchimpl.h>
@@ -182,7 +183,7 @@ PetscErrorCode TryStep(SNESLineSearch ls, SNES snes, Vec X, Vec Y, PetscReal lam
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
+PetscErrorCode SNESLineSearchApplyImpl(SNESLineSearch ls)
 {
   auto     *bn = static_cast<LineSearchBoltnet *>(ls->data);
   SNES      snes;
@@ -333,6 +334,13 @@ PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
   PetscFunctionReturn(0);
 }
 
+// The line search's apply: it allocates nothing itself, but calls the application's state function,
+// which may be C++ that throws; an exception must not travel on through SNES (C).
+PetscErrorCode SNESLineSearchApply_Boltnet(SNESLineSearch ls)
+{
+  return boltnet::Guard("SNESLineSearchApply_Boltnet", [&] { return SNESLineSearchApplyImpl(ls); });
+}
+
 PetscErrorCode SNESLineSearchSetFromOptions_Boltnet(SNESLineSearch ls, PetscOptionItems *PetscOptionsObject)
 {
   auto *bn = static_cast<LineSearchBoltnet *>(ls->data);
@@ -406,6 +414,9 @@ PetscErrorCode SNESLineSearchDestroy_Boltnet(SNESLineSearch ls)
 PetscErrorCode SNESLineSearchBoltnetSetStateChangeFunction(SNESLineSearch ls, BoltnetStateChangeFn fn, void *ctx)
 {
   PetscFunctionBeginUser;
+  // Explicit checks: PetscValidHeaderSpecific() does nothing in a PETSc built without debugging.
+  BoltnetCheckPointer(ls, 1, "SNESLineSearch");
+  PetscCheck(((PetscObject)ls)->classid == SNESLINESEARCH_CLASSID, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: argument 1 is a %s, not a SNESLineSearch", __func__, ((PetscObject)ls)->class_name);
   PetscTryMethod(ls, "SNESLineSearchBoltnetSetStateChangeFunction_C", (SNESLineSearch, BoltnetStateChangeFn, void *), (ls, fn, ctx));
   PetscFunctionReturn(0);
 }
@@ -419,7 +430,7 @@ extern "C" PetscErrorCode SNESLineSearchCreate_Boltnet(SNESLineSearch ls)
   ls->ops->view           = SNESLineSearchView_Boltnet;
   ls->ops->reset          = nullptr;
   ls->ops->setup          = nullptr;
-  PetscCall(boltnet::Guard(PetscObjectComm((PetscObject)ls), [&] {
+  PetscCall(boltnet::Guard("SNESLineSearchCreate_Boltnet", [&] {
     ls->data = new LineSearchBoltnet();
     return PetscErrorCode(0);
   }));

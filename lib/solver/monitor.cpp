@@ -37,7 +37,7 @@ PetscErrorCode MonitorJointStatesImpl(SNES snes, PetscInt its, PetscReal fnorm, 
 
 PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx)
 {
-  return Guard(PetscObjectComm((PetscObject)snes), [&] { return MonitorJointStatesImpl(snes, its, fnorm, ctx); });
+  return Guard("MonitorJointStates (SNES monitor)", [&] { return MonitorJointStatesImpl(snes, its, fnorm, ctx); });
 }
 
 namespace {

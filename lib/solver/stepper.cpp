@@ -1,5 +1,9 @@
 // Quasi-static load stepping: SNES per step, history committed only after convergence,
 // automatic cut-back with a bounded number of halvings.
+#include "core/check.hpp"
+#include "core/guard.hpp"
+#include "core/handle.hpp"
+#include "io/limits.hpp"
 #include "network/assembly.hpp"
 #include "solver/loadpath.hpp"
 #include "solver/progress.hpp"
@@ -76,7 +80,7 @@ namespace {
 //   floor and the out-of-balance force is also below -load_equilibrium_rtol of the problem's own
 //   force scale (AssemblyEquilibrium); elsewhere the solve goes on, and fails (and is cut back) if it
 //   cannot get there.
-PetscErrorCode ConvergedInBalance(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
 {
   BoltnetAssembly a = static_cast<BoltnetAssembly>(ctx);
   PetscFunctionBeginUser;
@@ -119,6 +123,12 @@ PetscErrorCode ConvergedInBalance(SNES snes, PetscInt it, PetscReal xnorm, Petsc
     } else PetscCall(PetscInfo(snes, "At the round-off floor of every row but not in balance: %s\n", DescribeEquilibrium(eq).c_str()));
   }
   PetscFunctionReturn(0);
+}
+
+// The convergence test handed to SNESSetConvergenceTest(): its messages are std::strings.
+PetscErrorCode ConvergedInBalance(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  return Guard("ConvergedInBalance (SNES convergence test)", [&] { return ConvergedInBalanceImpl(snes, it, xnorm, snorm, fnorm, reason, ctx); });
 }
 
 // The Newton iterations' linear solves and their Krylov iterations, for summary.json.
@@ -220,12 +230,13 @@ PetscErrorCode PrintProgress(BoltnetAssembly a, const StepInfo &info, const std:
 
 using namespace boltnet;
 
-PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal factors[], PetscInt steps_per_segment)
+namespace {
+// The load path after the checks of BoltnetAssemblySolveLoadPath(), inside its Guard(): the work
+// vector is a VecHandle, so that it is destroyed whichever way the solve ends.
+PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal factors[], PetscInt steps_per_segment)
 {
-  Vec Xtry;
+  VecHandle xtry;
   PetscFunctionBeginUser;
-  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
-  PetscCheck(steps_per_segment >= 1, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "steps_per_segment %" PetscInt_FMT " must be >= 1", steps_per_segment);
   // A new path starts from the current state; a restart (io/checkpoint.hpp) goes on along the path
   // of the run that wrote the checkpoint, from where that run stood.
   if (!a->resume) a->path = PathPosition{a->lambda, 0, 0, 0, 0};
@@ -237,7 +248,8 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
   PetscLogDouble t0;
   PetscCall(PetscTime(&t0));
   const PetscReal done0 = PathFraction(a->path.start, targets, (size_t)a->path.target, a->lambda);
-  PetscCall(VecDuplicate(a->X, &Xtry));
+  PetscCall(VecDuplicate(a->X, xtry.out()));
+  Vec Xtry = xtry.get();
   for (size_t i = (size_t)a->path.target; i < targets.size(); ++i) {
     const PetscReal target = targets[i];
     PetscReal sub    = a->path.sub != 0 ? a->path.sub : target - a->lambda; // current increment, halved on failure
@@ -339,7 +351,6 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
         m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << " did not converge (" << why << " after " << its
           << " Newton iterations) after " << halved << " cut-backs (-load_max_cuts " << a->opt.max_cuts << "); " << chatter;
         a->failure = m.str();
-        PetscCall(VecDestroy(&Xtry));
         SETERRQ(a->comm, PETSC_ERR_NOT_CONVERGED, "%s", a->failure.c_str());
       }
       ++cuts;
@@ -350,6 +361,31 @@ PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const
       PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu did not converge at load factor %g (%s); cutting the increment to %g. %s\n", a->steps.size() + 1, (double)a->lambda_target, why.c_str(), (double)sub, chatter.c_str()));
     }
   }
-  PetscCall(VecDestroy(&Xtry));
+  PetscFunctionReturn(0);
+}
+} // namespace
+
+// Checks the request before anything is allocated from it: n load factors (finite; NULL only when
+// n is 0), steps_per_segment steps per segment, at most limits::kMaxLoadSteps steps in all, as the
+// driver's -load_steps (docs/scenes.md, "Limits"). The halvings per step are -load_max_cuts,
+// bounded when the options are read.
+PetscErrorCode BoltnetAssemblySolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal factors[], PetscInt steps_per_segment)
+{
+  PetscFunctionBeginUser;
+  BoltnetCheckPointer(a, 1, "BoltnetAssembly");
+  PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "Call BoltnetAssemblySetUp() before BoltnetAssemblySolveLoadPath()");
+  PetscCheck(n >= 0 && n <= limits::kMaxLoadSteps, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 2 (n, the number of load factors) = %" PetscInt_FMT " is not in 0..%lld", __func__, n, (long long)limits::kMaxLoadSteps);
+  if (n > 0) BoltnetCheckPointer(factors, 3, "factors");
+  PetscCheck(steps_per_segment >= 1 && steps_per_segment <= limits::kMaxLoadSteps, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 4 (steps_per_segment) = %" PetscInt_FMT " is not in 1..%lld", __func__, steps_per_segment, (long long)limits::kMaxLoadSteps);
+  // The segments that LoadPathTargets() splits into steps: those that move the load factor.
+  std::int64_t segments = 0;
+  PetscReal    from     = a->resume ? a->path.start : a->lambda;
+  for (PetscInt i = 0; i < n; ++i) {
+    PetscCheck(std::isfinite(factors[i]), a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 3 (factors): factors[%" PetscInt_FMT "] is not finite", __func__, i);
+    if (factors[i] != from) ++segments;
+    from = factors[i];
+  }
+  PetscCheck(segments * steps_per_segment <= limits::kMaxLoadSteps, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: %" PetscInt_FMT " steps per segment (argument 4) over %lld segments is more than the limit of %lld load steps", __func__, steps_per_segment, (long long)segments, (long long)limits::kMaxLoadSteps);
+  PetscCall(Guard(__func__, [&] { return SolveLoadPath(a, n, factors, steps_per_segment); }));
   PetscFunctionReturn(0);
 }
