@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Distribution check (issue 3 item 4): summary.json reports the dof imbalance (max over ranks of the
+"""Distribution check: summary.json reports the dof imbalance (max over ranks of the
 owned dof over their mean) and the cut of parts into patches; assert that the imbalance is at most
 LIMIT and that the parts were cut (more patches than parts, joined by seams).
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks a single contact-law joint loaded along t1 against the closed form, through the shells.
 
-Requirement (issue 3 items 3, 5; paper sect. 2.1): in fig3a the bolt carries the whole load in x
+Requirement (paper sect. 2.1): in fig3a the bolt carries the whole load in x
 (the model is statically determinate in x), so its force f_t1 equals the load, and its jump follows
 the contact law: du = F/k while |F| <= k j, then sign(F) (j + (|F| - k j)/k'). The forces go through
 shell patches and penalty footprints, solved to round-off (docs/solver.md): rtol 1e-7.

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The shell correction of the fastener formula (issue 5 item 2; docs/identify.md, "Stiffness already
+"""The shell correction of the fastener formula (docs/identify.md, "Stiffness already
 in the shells").
 
   check_correction.py coupon IDENTIFY

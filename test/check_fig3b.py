@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks fig3b: four bolts with growing clearances come into bearing one after the other.
 
-Requirement (issue 3 item 5; paper figure 3b): under growing compression, the bolt with the smallest
+Requirement (paper figure 3b): under growing compression, the bolt with the smallest
 clearance bears first, then the next, in order, and all four bear at the end; and at every step the
 four bolts together carry the applied load (equilibrium of plate B in x: sum of f_t1 = load, to the
 round-off of the solve, rtol 1e-7).

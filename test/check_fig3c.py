@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks a fig3c joints.csv against an independent reference of the 1D frictional macroelement.
 
-Requirement (issue 2, items 2, 7, 9): stick, slide and bearing follow the paper's closed form under
+Requirement: stick, slide and bearing follow the paper's closed form under
 monotonic loading; unloading is elastic until the force has dropped by 2G; reverse loading slides
 back across the clearance and bears on the other side.
 

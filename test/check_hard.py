@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Closed-form checks of the hard-on-purpose cases of the robustness matrix (issue 4 items 1 and 6).
+"""Closed-form checks of the hard-on-purpose cases of the robustness matrix.
 
 force1d: every joint of joints.csv carries `share` of the applied force F (the load factor, N) along
   t1 and follows the 1D frictional law's force-first closed form (check_fig3c.py's reference, with the

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A scene whose joint type is identified from its geometry at start-up (issue 5 item 4).
+"""A scene whose joint type is identified from its geometry at start-up.
 
 Checks that summary.json records the identified parameters, that they equal what boltnet-identify
 prints for the same geometry (the same fastener given through the driver's -fastener_* options), and

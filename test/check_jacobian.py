@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Reads the output of a run with -snes_test_jacobian -snes_monitor and checks the Jacobian.
 
-Requirement (issue 2, item 9): the joint tangents agree with finite differences of the forces,
+Requirement: the joint tangents agree with finite differences of the forces,
 through PETSc's -snes_test_jacobian. The joint laws are piecewise smooth and the first iterate of a
 load step is the previous converged point, where a sliding joint sits exactly on its friction
 threshold: there PETSc's differencing step crosses the kink and measures it, not the tangent. Those

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Energy dissipated by the frictional joint over one displacement cycle, through the whole stack.
 
-Requirement (issue 2 items 2 and 9; benchmarks "Jenkins element"): with kg = 0 and the clearance
+Requirement (benchmarks "Jenkins element"): with kg = 0 and the clearance
 never reached, a cycle of imposed displacement between +A and -A with G/ke < A dissipates exactly
 W = 4 G (A - G/ke). The run imposes 0 -> A -> -A -> A on patch 1 by prescribed displacement; the
 closed cycle is A -> -A -> A. Its step size puts the stick/slide kinks on step boundaries, so the

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Load shares of the lap-rows specimens against the closed-form spring chain.
 
-Requirement (issue 3 item 5): for 1 to 4 rows of rivets, compare the share of the load each rivet
+Requirement: for 1 to 4 rows of rivets, compare the share of the load each rivet
 carries with the closed form of Tate & Rosenfeld (NACA TN 1051): rivets of stiffness kf between two
 identical sheets (axial stiffness per pitch kp = E w t / p), no secondary bending:
     delta_i = F_i / kf,  delta_{i+1} - delta_i = p (S_i - (P - S_i)) / (E w t),  sum F_i = P

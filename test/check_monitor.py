@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Checks -joint_monitor against joints.csv.
 
-Requirement (issue 2 item 5, and the monitor issue 4 item 3 asks for): per Newton iteration the
+Requirement: per Newton iteration the
 monitor prints the joints in each state, summed over ranks. At the last iteration of each load step
 those counts must equal the states joints.csv records for that step (written from the converged
 point by a different path: records gathered to rank 0), and every line must count every joint.

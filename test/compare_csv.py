@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Compares two joints.csv files: same rows, same words, numbers equal to round-off.
 
-Requirement (issue 2, item 9; standards): results do not depend on the number of MPI ranks.
+Requirement (standards): results do not depend on the number of MPI ranks.
 Numbers must agree to rtol relative to the largest magnitude of the quantity (default 1e-10): a
 column's scale is the largest value among the columns of the same quantity (du_*, f_*, slip_*), so
 a component that is zero up to round-off (du_t2 of a joint loaded along t1) is judged against the

@@ -1,4 +1,4 @@
-# Identification tests (issue 5): the fastener flexibility formulas, the curve fit, and the driver
+# Identification tests: the fastener flexibility formulas, the curve fit, and the driver
 # boltnet-identify (good runs and every bad input of item 5). docs/identify.md.
 add_executable(test_identify
   ${CMAKE_CURRENT_SOURCE_DIR}/test_identify_fastener.cpp
@@ -11,7 +11,7 @@ target_link_libraries(test_identify PRIVATE GTest::gtest GTest::gtest_main)
 target_compile_definitions(test_identify PRIVATE BOLTNET_IDENTIFY_DATA="${CMAKE_CURRENT_SOURCE_DIR}/data/identify")
 gtest_discover_tests(test_identify TEST_PREFIX identify.)
 
-# The driver boltnet-identify (issue 5 items 1, 3, 5), through expect.sh (test/CMakeLists.txt).
+# The driver boltnet-identify, through expect.sh (test/CMakeLists.txt).
 set(_id $<TARGET_FILE:boltnet_identify>)
 set(_iddata ${CMAKE_CURRENT_SOURCE_DIR}/data/identify)
 # A 1/4 in titanium fastener in 3 mm + 4 mm aluminium sheets, 0.1 mm diametral clearance, 8 N m torque

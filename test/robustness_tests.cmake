@@ -1,4 +1,4 @@
-# Hard-on-purpose cases of the robustness matrix (issue 4 items 1 and 6; docs/robustness.md) that the
+# Hard-on-purpose cases of the robustness matrix (docs/robustness.md) that the
 # default method (boltnet line search, consistent tangent, adaptive steps) passes: each asserts that the
 # run converges and that it gives the reference values, so that a solver regression fails here. Cases
 # the default does not pass yet are listed in docs/robustness.md, not tested. Included by CMakeLists.txt.

@@ -1,4 +1,4 @@
-# Shell element tests (issue 3). The kernels are compiled into the tests directly (as test_joint_law
+# Shell element tests. The kernels are compiled into the tests directly (as test_joint_law
 # does with the joint laws), so the shell tests do not depend on the rest of libboltnet.
 set(BOLTNET_SHELL_SOURCES ${PROJECT_SOURCE_DIR}/lib/shell/material.cpp ${PROJECT_SOURCE_DIR}/lib/shell/element.cpp
                           ${PROJECT_SOURCE_DIR}/lib/shell/triangle.cpp)

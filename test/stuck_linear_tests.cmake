@@ -1,4 +1,4 @@
-# Linear where it can be (issue 4 item 5; docs/solver.md): with -joint_stuck_linear (the default)
+# Linear where it can be (docs/solver.md): with -joint_stuck_linear (the default)
 # joints that stay stuck are solved as linear springs, every one is checked with the full law before
 # a step is accepted, and the Jacobian and its factorisation are kept while no joint's tangent
 # changes. The reference is the same run with the option off (the full law everywhere, a new

@@ -1,4 +1,4 @@
-// Issue 5 item 3: the frictional macroelement's parameters (ke, G, kg, j, kc) fitted to a load-slip
+// The frictional macroelement's parameters (ke, G, kg, j, kc) fitted to a load-slip
 // curve (lib/identify/curve.*). Requirements checked here:
 //  - the forward model is boltnet's law (boltnet::evaluate) and its parameter sensitivities are exact;
 //  - known parameters are recovered from curves boltnet generates: exactly (1e-8 relative) without

@@ -1,4 +1,4 @@
-// Issue 5 item 1: the frictional macroelement from a fastener's geometry (lib/identify/fastener.*).
+// The frictional macroelement from a fastener's geometry (lib/identify/fastener.*).
 // Requirements checked here:
 //  - Huth's formula reproduces the worked values of docs/benchmarks.md ("Fastener flexibility");
 //  - every other formula (Swift, Tate-Rosenfeld, Grumman, Boeing, Nelson) equals a hand calculation

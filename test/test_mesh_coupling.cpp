@@ -1,5 +1,5 @@
 // Unit tests of the plate generator, the cut into patches, the fastener footprint and the rigid
-// patch coupling (issue 3 items 2 and 3: the pieces that do not need the shell element).
+// patch coupling (the pieces that do not need the shell element).
 #include "patch/rigid.hpp"
 #include "mesh/cut.hpp"
 #include "mesh/mesh.hpp"
@@ -12,7 +12,7 @@
 
 using namespace boltnet;
 
-// Requirement (issue 3 item 2): a generated rectangular plate has the right nodes, elements and
+// Requirement: a generated rectangular plate has the right nodes, elements and
 // edge node sets, and its elements are counter-clockwise with the plate's area.
 TEST(Mesh, RectanglePlate)
 {
@@ -123,7 +123,7 @@ TEST(Mesh, CutPartBeatsStrips)
   EXPECT_LT(CrossElements(m, c), 120);
 }
 
-// Requirement (issue 3 item 3): the footprint is the set of nodes within the radius, measured in the
+// Requirement: the footprint is the set of nodes within the radius, measured in the
 // plane normal to the fastener axis (the height of the node along the axis does not matter).
 TEST(Mesh, Footprint)
 {
@@ -175,7 +175,7 @@ TEST(Mesh, FootprintFinderNearestSheet)
   EXPECT_LT(near.size(), brute.size());
 }
 
-// Requirement (issue 3 item 3): the penalty rigid link does no work on any rigid motion of the pair
+// Requirement: the penalty rigid link does no work on any rigid motion of the pair
 // (six of them), is symmetric, and resists every relative motion: its null space is exactly the
 // six rigid motions (rank 6 of 12).
 TEST(Coupling, RigidLinkPenaltyRigidModes)
@@ -212,7 +212,7 @@ TEST(Coupling, RigidLinkPenaltyRigidModes)
   EXPECT_NEAR(e, k, 1e-9 * k);
 }
 
-// Requirement (issue 3 item 3, exact elimination): G maps a rigid motion to zero and the slave's
+// Requirement (exact elimination): G maps a rigid motion to zero and the slave's
 // dof to themselves (G's slave block is the identity).
 TEST(Coupling, RigidLinkConstraint)
 {
@@ -252,7 +252,7 @@ std::string ErrorOf(const std::string &path)
 }
 } // namespace
 
-// Requirement (issue 3 item 2): physical surface groups of a Gmsh MSH 4.1 file are the parts, with
+// Requirement: physical surface groups of a Gmsh MSH 4.1 file are the parts, with
 // their own node numbering; physical curve groups become node sets of the parts that hold them.
 TEST(Gmsh, PartsAndBoundarySets)
 {
@@ -274,7 +274,7 @@ TEST(Gmsh, PartsAndBoundarySets)
   EXPECT_DOUBLE_EQ(skin.x[q[2]][1], 1.0);
 }
 
-// Requirement (issue 3 item 8): a mesh file that does not exist, is not a mesh, or is in another
+// Requirement: a mesh file that does not exist, is not a mesh, or is in another
 // MSH version is rejected with a message naming the file and what is wrong (element types other
 // than triangles and quadrangles: MeshTriangles.Gmsh).
 TEST(Gmsh, BadInput)

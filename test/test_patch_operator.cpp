@@ -1,4 +1,4 @@
-// The patch operator of a shell patch with a joint node (issue 3 item 3, docs/coupling.md): exact
+// The patch operator of a shell patch with a joint node (docs/coupling.md): exact
 // elimination of the footprint against closed forms, and penalty converging to it; curved meshes of
 // triangles with the mesh's nodal directors.
 #include "patch/patch.hpp"

@@ -1,4 +1,4 @@
-// Unit tests of the shell kernels (issue 3, item 1) that need no global solve: sections (isotropic,
+// Unit tests of the shell kernels that need no global solve: sections (isotropic,
 // laminate by CLT, rotation, bad input), element stiffness (symmetry, rigid-body modes on a warped
 // element, rank), consistent loads.
 #include "shell/shell.hpp"

@@ -1,4 +1,4 @@
-/* A shell patch in the network, through the public API only (issue 3 items 3 and 4).
+/* A shell patch in the network, through the public API only.
 
    An aluminium strip (E = 72000 MPa, nu = 0, t = 1.27 mm, w = 20 mm, L = 150 mm), clamped at x = 0,
    carries at x = L a joint (a linear spring, kt along x) to a rigid patch that is pulled by F in x.

@@ -1,4 +1,4 @@
-// Shell elements (issue 3, item 1) through a global solve, on quadrilateral, triangle and mixed meshes:
+// Shell elements through a global solve, on quadrilateral, triangle and mixed meshes:
 // patch tests, laminates against CLT, plates, the MacNeal-Harder set, the pinched shells and the
 // skew plate, with the symmetry models checked against full models. Tolerances come from the tables in
 // docs/shell-convergence.md (each test says which row), references from docs/shell.md.
@@ -41,7 +41,7 @@ ElementOptions Drill(double drill)
 } // namespace
 
 // ===================================================================================================
-// Exact solutions (issue 3: "constant membrane strain, constant curvature pass to round-off"), on
+// Exact solutions ("constant membrane strain, constant curvature pass to round-off"), on
 // quadrilateral, triangle and mixed meshes.
 
 // Requirement: constant membrane strain (with an in-plane rotation) is reproduced to round-off on the

@@ -1,4 +1,4 @@
-// Stiffness already in the shells (issue 5 item 2): the compliance that the shell mesh and the patch
+// Stiffness already in the shells: the compliance that the shell mesh and the patch
 // coupling add to a joint, measured on a virtual coupon, and the fastener stiffness corrected for it.
 //
 // A fastener formula (Huth, Swift, ...) gives the compliance of the whole joint as measured on a test

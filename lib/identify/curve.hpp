@@ -1,4 +1,4 @@
-// The frictional macroelement's parameters from a test curve (issue 5 item 3): a load-slip curve
+// The frictional macroelement's parameters from a test curve: a load-slip curve
 // (monotonic or cyclic) is fitted by nonlinear least squares (Levenberg-Marquardt on the five
 // parameters ke, G, kg, j, kc), with standard errors and the residual; a curve that cannot identify
 // a parameter is rejected with a message naming it. docs/identify.md has the details.

@@ -1,4 +1,4 @@
-// Macroelement parameters from a fastener's geometry (issue 5 item 1): clearance, pretension,
+// Macroelement parameters from a fastener's geometry: clearance, pretension,
 // friction threshold, axial stiffness, and the bearing stiffness from the fastener flexibility
 // formulas of aircraft structures. Formulas, sources and assumptions: docs/identify.md.
 //

@@ -16,7 +16,7 @@ struct FastenerOptions {
   PetscBool        has_mu = PETSC_FALSE;
 };
 
-// The shell correction (issue 5 item 2, identify/coupon.hpp): options -<prefix>shell_*.
+// The shell correction (identify/coupon.hpp): options -<prefix>shell_*.
 struct ShellCorrectionOptions {
   PetscBool on     = PETSC_FALSE;
   double    h      = 0;    // element size around the fastener (mm); 0: measured on the joint's patches (scenes)

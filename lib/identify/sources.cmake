@@ -1,4 +1,4 @@
-# Joint parameter identification sources (issue 5): target_sources(boltnet PRIVATE ...).
+# Joint parameter identification sources: target_sources(boltnet PRIVATE ...).
 # Macroelement parameters from a fastener's geometry (flexibility formulas) and from a test curve
 # (least-squares fit of the frictional law); docs/identify.md.
 target_sources(boltnet PRIVATE

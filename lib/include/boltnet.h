@@ -64,7 +64,7 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblySetOptionsPrefix(BoltnetAssembly, con
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddRigidPatch(BoltnetAssembly, PetscInt id, const PetscReal x[3]);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddJoint(BoltnetAssembly, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *, const PetscReal normal[3], const PetscReal t1[3]);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBC(BoltnetAssembly, PetscInt patch, PetscInt dof, BoltnetBCKind, PetscReal value);
-/* Shell patches (issue 3): a quadrilateral mesh (nnodes coordinates xyz[3*i+k], nquads
+/* Shell patches: a quadrilateral mesh (nnodes coordinates xyz[3*i+k], nquads
    counter-clockwise quads[4*e+k], node numbers from 0) of an isotropic shell (E, nu, thickness t).
    Joints attach to a shell patch at their position, through the nodes of their footprint
    (-coupling_radius) tied rigidly to a joint node: eliminated exactly (-coupling_type exact, the

@@ -181,7 +181,7 @@ PetscErrorCode JointTypeFromOptions(MPI_Comm comm, BoltnetAssembly a, const std:
   const std::string title  = "Joint type '" + type + "' (units: N, mm, N/mm, N mm/rad)";
   PetscFunctionBeginUser;
   PetscCall(BoltnetJointParamsSetDefault(BOLTNET_LAW_SPRING, p));
-  // Parameters given, or identified from the fastener's geometry at start-up (issue 5 item 4).
+  // Parameters given, or identified from the fastener's geometry at start-up.
   const char *sources[] = {"parameters", "geometry"};
   PetscInt    source    = 0;
   PetscOptionsBegin(comm, prefix.c_str(), title.c_str(), "boltnet");

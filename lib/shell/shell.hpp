@@ -1,4 +1,4 @@
-// boltnet shell element kernels (issue 3): pure C++, no PETSc, no global state.
+// boltnet shell element kernels: pure C++, no PETSc, no global state.
 //
 // Two elements with 6 dof per node (u_x, u_y, u_z, theta_x, theta_y, theta_z in global axes), the same
 // section (resultant law N, M, Q = [A B; B D], H) and the same director kinematics (kinematics.hpp):

@@ -1,4 +1,4 @@
-# Shell element sources (issue 3): target_sources(boltnet PRIVATE ...).
+# Shell element sources: target_sources(boltnet PRIVATE ...).
 # Pure C++ kernels (no PETSc): sections (isotropic, laminate by CLT), the four-node MITC4 shell and the
 # three-node MITC3+ / OPT shell (shared director kinematics: kinematics.hpp).
 target_sources(boltnet PRIVATE
