@@ -67,6 +67,10 @@ void LineReader::Push(const std::string &path, const Line *from)
   if (fs::is_directory(path, ec) || (o->in.open(path), !o->in))
     throw Error(here + (from ? "INCLUDE: cannot read the file '" : "Cannot read the Nastran deck '") + path + "'",
                 from ? files_[from->file] : path, from ? from->line : 0, from ? "INCLUDE" : "", 0);
+  // Only a regular file ends: a device or a pipe (INCLUDE /dev/zero) would be read forever.
+  if (!fs::is_regular_file(path, ec))
+    throw Error(here + (from ? "INCLUDE: '" : "The Nastran deck '") + path + "' is not a regular file",
+                from ? files_[from->file] : path, from ? from->line : 0, from ? "INCLUDE" : "", 0);
   o->canonical = fs::weakly_canonical(fs::path(path), ec).string();
   for (const auto &s : stack_)
     if (s->canonical == o->canonical)
