@@ -2,6 +2,7 @@
 // subcase (nastran/model.hpp) described into an assembly, with the fastener table that turns
 // chosen CBUSH/CFAST into macroelements of a joint type (-joint_<type>_*, as a scene's joints).
 #include "io/io.hpp"
+#include "io/input.hpp"
 #include "io/table.hpp"
 #include "nastran/model.hpp"
 #include "nastran/petsc.hpp"
@@ -13,21 +14,6 @@
 namespace boltnet {
 
 namespace {
-
-// Input errors (the deck's model, the table) as PETSc errors with their own message; every rank
-// builds the same model from the same deck, so the error is collective.
-template <class F>
-PetscErrorCode Input(MPI_Comm comm, F &&body)
-{
-  try {
-    body();
-  } catch (const std::bad_alloc &) {
-    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory while turning the Nastran deck into a model");
-  } catch (const std::exception &e) {
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s", e.what());
-  }
-  return 0;
-}
 
 // A row of the fastener table: elements first..last (inclusive) or property pid -> joint type.
 struct FastenerRule {
@@ -42,7 +28,7 @@ PetscErrorCode ReadFastenerTable(MPI_Comm comm, const std::string &path, std::ve
   std::string text;
   PetscFunctionBeginUser;
   PetscCall(ReadFileCollective(comm, path, "Nastran fastener table (-nastran_fasteners)", &text));
-  PetscCall(Input(comm, [&] {
+  PetscCall(Input(comm, "turning the Nastran deck into a model", [&] {
     const Table t = ParseTable(path, text, {"type"});
     const bool  by_element = t.Has("first"), by_pid = t.Has("pid");
     if (!by_element && !by_pid) throw std::runtime_error(path + ": the fastener table needs a column 'first' (element id, with 'last' for a range) or 'pid' (PBUSH/PFAST id)");
@@ -72,7 +58,7 @@ PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, Pe
   PetscFunctionBeginUser;
   ids->clear();
   if (chosen > 0) {
-    PetscCall(Input(comm, [&] {
+    PetscCall(Input(comm, "turning the Nastran deck into a model", [&] {
       try {
         (void)nastran::FindSubcase(deck, (int)chosen);
       } catch (const nastran::Error &e) {
@@ -90,7 +76,7 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
   nastran::DeckModel        m;
   std::vector<FastenerRule> rules;
   PetscFunctionBeginUser;
-  PetscCall(Input(comm, [&] { m = nastran::ModelOf(deck, (int)subcase, options); }));
+  PetscCall(Input(comm, "turning the Nastran deck into a model", [&] { m = nastran::ModelOf(deck, (int)subcase, options); }));
   for (const std::string &n : m.notes) PetscCall(PetscPrintf(comm, "boltnet: nastran: %s\n", n.c_str()));
   if (!fasteners.empty()) PetscCall(ReadFastenerTable(comm, fasteners, &rules));
 

@@ -3,6 +3,7 @@
 #include "io/io.hpp"
 #include "io/limits.hpp"
 #include "io/scene_yaml.hpp"
+#include "io/input.hpp"
 #include "io/table.hpp"
 #include "core/errors.hpp"
 #include "core/guard.hpp"
@@ -23,40 +24,25 @@
 namespace boltnet {
 namespace {
 
-// A table's or file's error (std::runtime_error from io/table.hpp, io/scene_yaml.hpp) as a PETSc
-// error naming it; every rank parses the same text, so the error is collective.
-template <class F>
-PetscErrorCode Input(MPI_Comm comm, F &&body)
-{
-  try {
-    body();
-  } catch (const std::bad_alloc &) {
-    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory while reading the scene");
-  } catch (const std::exception &e) {
-    SETERRQ(comm, PETSC_ERR_USER_INPUT, "%s", e.what());
-  }
-  return 0;
-}
-
 PetscErrorCode ParseTable(MPI_Comm comm, const std::string &path, const std::string &text, const std::vector<std::string> &required, Table *t)
 {
-  return Input(comm, [&] { *t = boltnet::ParseTable(path, text, required); });
+  return Input(comm, "reading the scene", [&] { *t = boltnet::ParseTable(path, text, required); });
 }
 
 PetscErrorCode Cell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, std::string *v)
 {
-  return Input(comm, [&] { *v = TableCell(t, row, col); });
+  return Input(comm, "reading the scene", [&] { *v = TableCell(t, row, col); });
 }
 
 PetscErrorCode RealCell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, PetscReal *x)
 {
-  return Input(comm, [&] { *x = TableReal(t, row, col); });
+  return Input(comm, "reading the scene", [&] { *x = TableReal(t, row, col); });
 }
 
 // A whole number in [lo, hi] (at most limits::kMaxId: PetscInt is 32-bit here).
 PetscErrorCode IntCell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, std::int64_t lo, std::int64_t hi, PetscInt *i)
 {
-  return Input(comm, [&] { *i = static_cast<PetscInt>(TableInt(t, row, col, lo, hi)); });
+  return Input(comm, "reading the scene", [&] { *i = static_cast<PetscInt>(TableInt(t, row, col, lo, hi)); });
 }
 
 // An id of a patch or a joint: 0 .. 2^31 - 1.
@@ -285,7 +271,7 @@ PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   if (rank == 0) {
-    PetscCall(Input(PETSC_COMM_SELF, [&] {
+    PetscCall(Input(PETSC_COMM_SELF, "reading the scene", [&] {
       std::ifstream in(path, std::ios::binary);
       if (!in) return;
       // Read in pieces and stop past the limit: a huge file, or a device that never ends, is refused
@@ -302,7 +288,7 @@ PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const 
   PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG_LONG, 0, comm));
   PetscCheck(len != -2, comm, PETSC_ERR_USER_INPUT, "The %s file '%s' is larger than %lld bytes (docs/scenes.md, \"Limits\")", what, path.c_str(), (long long)limits::kMaxInputBytes);
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot read the %s file '%s'", what, path.c_str());
-  PetscCall(Input(comm, [&] { text->resize((size_t)len); }));
+  PetscCall(Input(comm, "reading the scene", [&] { text->resize((size_t)len); }));
   PetscCallMPI(MPI_Bcast(text->data(), (PetscMPIInt)len, MPI_CHAR, 0, comm));
   PetscFunctionReturn(0);
 }
@@ -322,7 +308,7 @@ static PetscErrorCode SceneInsertOptionsFileImpl(MPI_Comm comm, const char file[
   scene->name            = base.substr(0, base.find('.'));
   // Syntax and shape first, with lines and columns (PETSc's reader names neither file nor line).
   std::vector<YamlKey> keys;
-  PetscCall(Input(comm, [&] { keys = ScanSceneYaml(file, text); }));
+  PetscCall(Input(comm, "reading the scene", [&] { keys = ScanSceneYaml(file, text); }));
   PetscCall(PetscOptionsCreate(&opts));
   {
     ErrorLog       log;
@@ -338,7 +324,7 @@ static PetscErrorCode SceneInsertOptionsFileImpl(MPI_Comm comm, const char file[
     // A misspelled section (lod: for load:) would otherwise set options that nothing reads.
     std::vector<std::string> set(names, names + n);
     std::string              bad;
-    PetscCall(Input(comm, [&] { bad = CheckSceneSections(file, keys, set); }));
+    PetscCall(Input(comm, "reading the scene", [&] { bad = CheckSceneSections(file, keys, set); }));
     if (!bad.empty()) {
       PetscCall(PetscOptionsLeftRestore(opts, &n, &names, &values));
       PetscCall(PetscOptionsDestroy(&opts));
@@ -425,7 +411,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       PetscCheck(elements.empty() || elements == "quad" || elements == "tri" || elements == "mixed", comm, PETSC_ERR_USER_INPUT, "%s line %d, column 'elements': '%s' is not quad, tri or mixed", patches.path.c_str(), patches.lines[r], elements.c_str());
       if (elements == "tri") pe = PlateElements::Triangles;
       if (elements == "mixed") pe = PlateElements::Mixed;
-      PetscCall(Input(comm, [&] { mesh = RectanglePlate(x[0], x[1], lx, ly, (int)nx, (int)ny, x[2], pe); }));
+      PetscCall(Input(comm, "reading the scene", [&] { mesh = RectanglePlate(x[0], x[1], lx, ly, (int)nx, (int)ny, x[2], pe); }));
     } else {
       std::string file, part;
       PetscCall(Cell(comm, patches, r, "mesh", &file));

@@ -228,20 +228,32 @@ PetscErrorCode NullVector(BoltnetAssembly a, Vec z, PetscBool *found)
 
 } // namespace
 
-PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
+// The SNES's KSP and PC, and whether the PC is an LU factorisation by MUMPS (the only solver whose
+// null pivots boltnet reads).
+static PetscErrorCode MumpsLU(BoltnetAssembly a, KSP *ksp, PC *pc, PetscBool *mumps)
 {
-  KSP           ksp;
-  PC            pc;
   PetscBool     lu;
-  Mat           F;
   MatSolverType type;
   PetscFunctionBeginUser;
-  PetscCall(SNESGetKSP(a->snes, &ksp));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCLU, &lu));
+  *mumps = PETSC_FALSE;
+  PetscCall(SNESGetKSP(a->snes, ksp));
+  PetscCall(KSPGetPC(*ksp, pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)*pc, PCLU, &lu));
   if (!lu) PetscFunctionReturn(0);
-  PetscCall(PCFactorGetMatSolverType(pc, &type));
-  if (!type || std::strcmp(type, MATSOLVERMUMPS)) PetscFunctionReturn(0);
+  PetscCall(PCFactorGetMatSolverType(*pc, &type));
+  *mumps = type && !std::strcmp(type, MATSOLVERMUMPS) ? PETSC_TRUE : PETSC_FALSE;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
+{
+  KSP       ksp;
+  PC        pc;
+  PetscBool mumps;
+  Mat       F;
+  PetscFunctionBeginUser;
+  PetscCall(MumpsLU(a, &ksp, &pc, &mumps));
+  if (!mumps) PetscFunctionReturn(0);
   PetscCall(KSPSetOperators(ksp, a->J, a->lagged ? a->Pfac : a->J));
   PetscCall(PCFactorSetUpMatSolverType(pc));
   PetscCall(PCFactorGetMatrix(pc, &F));
@@ -253,20 +265,15 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
 
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
 {
-  KSP           ksp;
-  PC            pc;
-  PetscBool     lu;
-  Mat           F;
-  MatSolverType type;
-  PetscInt      icntl24;
+  KSP       ksp;
+  PC        pc;
+  PetscBool mumps;
+  Mat       F;
+  PetscInt  icntl24;
   PetscFunctionBeginUser;
   *nnull = 0;
-  PetscCall(SNESGetKSP(a->snes, &ksp));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCLU, &lu));
-  if (!lu) PetscFunctionReturn(0);
-  PetscCall(PCFactorGetMatSolverType(pc, &type));
-  if (!type || std::strcmp(type, MATSOLVERMUMPS)) PetscFunctionReturn(0);
+  PetscCall(MumpsLU(a, &ksp, &pc, &mumps));
+  if (!mumps) PetscFunctionReturn(0);
   PetscCall(PCFactorGetMatrix(pc, &F));
   MatFactorType ftype;
   PetscCall(MatGetFactorType(F, &ftype));
