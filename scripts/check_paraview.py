@@ -52,14 +52,31 @@ for t in times:
     pv.Render(view)
 # The picture: the step of largest displacement, seen obliquely.
 tmax = max(times, key=lambda t: np.abs(h5[f"/steps/{int(t):06d}/shells/displacement"][:]).max())
+# Scale the displacements so that the largest is a tenth of the model's size: a fixed factor turns
+# a flexible model into a tangle and leaves a stiff one undeformed.
+xyz = np.asarray(h5["/shells/coordinates"][:], dtype=float)
+largest = np.abs(h5[f"/steps/{int(tmax):06d}/shells/displacement"][:]).max()
+if largest > 0:
+    warp.ScaleFactor = 0.1 * np.ptp(xyz, axis=0).max() / largest
 view.ViewTime = tmax
 pv.Render(view)
 shown.RescaleTransferFunctionToDataRange(False, True)
-view.ResetActiveCameraToPositiveZ()
+# Look along the shells' dominant normal (the eigenvector of sum n n^T over the stored normals),
+# then tilt: a view along a fixed axis sees a plate lying in another plane edge-on, as a line.
+normals = np.asarray(h5["/shells/normal"][:], dtype=float).reshape(-1, 3)
+w, v = np.linalg.eigh(normals.T @ normals)
+look = v[:, int(np.argmax(w))]
+b = merged.GetDataInformation().GetBounds()
+centre = np.array([0.5 * (b[2 * i] + b[2 * i + 1]) for i in range(3)])
+size = max(b[1] - b[0], b[3] - b[2], b[5] - b[4], 1e-12)
+up = np.cross(look, np.eye(3)[int(np.argmin(np.abs(look)))])
+view.CameraPosition = list(centre + 2 * size * look)
+view.CameraFocalPoint = list(centre)
+view.CameraViewUp = list(up / np.linalg.norm(up))
 view.ResetCamera()
 camera = view.GetActiveCamera()
-camera.Elevation(-50)
-camera.Azimuth(20)
+camera.Elevation(-35)
+camera.Azimuth(15)
 view.ResetCamera()
 pv.SaveScreenshot(png, view, ImageResolution=[900, 600])
 
