@@ -1,7 +1,11 @@
-// boltnet's PetscLogEvents, registered once by BoltnetInitializePackage(), so that -log_view says
-// where the time goes: set-up (layout, network), condensation of the patches, assembly of the
-// interface (residual and Jacobian), recovery of the interiors, and output. The interface solve is
-// PETSc's own KSPSolve / PCSetUp / MatLUFactorNum under SNESSolve.
+// boltnet's PetscLogEvents and PetscLogStages, registered once by BoltnetInitializePackage(), so that
+// -log_view says where the time goes. Events: set-up (layout, network), condensation of the patches,
+// assembly of the interface (residual and Jacobian), recovery of the interiors, and output. Stages
+// (-log_view's "Summary of Stages", and every event table split by stage): "Boltnet Set-up" (layout
+// and network), "Boltnet Condense" (the patch operators and their Schur complements), "Boltnet Solve"
+// (SNESSolve on the interface: assembly, PETSc's KSPSolve / PCSetUp / MatLUFactorNum, the line
+// search) and "Boltnet Output" (recovery of the interiors where output needs them, the files).
+// What runs outside them (reading the scene, the driver) stays in PETSc's "Main Stage".
 #pragma once
 #include <petsclog.h>
 
@@ -9,6 +13,7 @@ namespace boltnet {
 struct LogEvents {
   PetscClassId  classid = 0;
   PetscLogEvent layout = 0, network = 0, condense = 0, residual = 0, jacobian = 0, joints = 0, recover = 0, output = 0;
+  PetscLogStage setup_stage = 0, condense_stage = 0, solve_stage = 0, output_stage = 0;
 };
 // The package's events (valid after BoltnetInitializePackage()).
 const LogEvents &Events();

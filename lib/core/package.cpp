@@ -49,6 +49,10 @@ PetscErrorCode BoltnetInitializePackage(void)
   PetscCall(PetscLogEventRegister("BoltnetJoints", events.classid, &events.joints));
   PetscCall(PetscLogEventRegister("BoltnetRecover", events.classid, &events.recover));
   PetscCall(PetscLogEventRegister("BoltnetOutput", events.classid, &events.output));
+  PetscCall(PetscLogStageRegister("Boltnet Set-up", &events.setup_stage));
+  PetscCall(PetscLogStageRegister("Boltnet Condense", &events.condense_stage));
+  PetscCall(PetscLogStageRegister("Boltnet Solve", &events.solve_stage));
+  PetscCall(PetscLogStageRegister("Boltnet Output", &events.output_stage));
   PetscCall(PetscRegisterFinalize(BoltnetFinalizePackage));
   PetscFunctionReturn(0);
 }

@@ -150,7 +150,9 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
 {
   std::vector<JointRecord> rec;
   PetscFunctionBeginUser;
-  // -log_view: the field output's time is BoltnetOutput (scripts/bench-output measures it).
+  // -log_view: the field output's time is BoltnetOutput (scripts/bench-output measures it), and
+  // the whole step's output is the stage "Boltnet Output".
+  PetscCall(PetscLogStagePush(Events().output_stage));
   PetscCall(PetscLogEventBegin(Events().output, 0, 0, 0, 0));
   if (out->fields && out->ff.opt.gather) {
     std::vector<PartField> parts;
@@ -194,6 +196,7 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
     if (std::fflush(out->csv) != 0) why = Why(out->dir + "/joints.csv");
   }
   PetscCall(ShareError(a->comm, why));
+  PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
 

@@ -137,6 +137,7 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
 {
   PetscFunctionBeginUser;
   const double penalty_factor = a->opt.coupling_penalty;
+  PetscCall(PetscLogStagePush(Events().condense_stage));
   PetscCall(PetscLogEventBegin(Events().condense, 0, 0, 0, 0));
   PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
@@ -165,6 +166,7 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
     PetscFunctionReturn(0);
   }));
   PetscCall(PetscLogEventEnd(Events().condense, 0, 0, 0, 0));
+  PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
 }
 
@@ -184,6 +186,7 @@ PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, siz
 PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
 {
   PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(Events().setup_stage));
   PetscCall(PetscLogEventBegin(Events().layout, 0, 0, 0, 0));
   LayoutOptions lo;
   lo.coupling  = a->opt.coupling_type;
@@ -205,6 +208,7 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   PetscCall(CreateNetwork(a));
   PetscCall(LocalViews(a));
   PetscCall(PetscLogEventEnd(Events().network, 0, 0, 0, 0));
+  PetscCall(PetscLogStagePop());
   PetscCall(BuildOperators(a));
 
   PetscCall(DMCreateGlobalVector(a->net.dm, &a->X));

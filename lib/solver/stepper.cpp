@@ -1,6 +1,7 @@
 // Quasi-static load stepping: SNES per step, history committed only after convergence,
 // automatic cut-back with a bounded number of halvings.
 #include "core/check.hpp"
+#include "core/log.hpp"
 #include "core/guard.hpp"
 #include "core/handle.hpp"
 #include "io/limits.hpp"
@@ -266,7 +267,9 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
       PetscCall(AssemblyFreezeStuck(a, a->lambda_target - a->lambda));
       PetscCall(SetStepTolerance(a, Xtry));
       a->singular.clear();
+      PetscCall(PetscLogStagePush(Events().solve_stage));
       PetscCall(SNESSolve(a->snes, nullptr, Xtry));
+      PetscCall(PetscLogStagePop());
       SNESConvergedReason reason;
       PetscInt            its;
       PetscCall(SNESGetConvergedReason(a->snes, &reason));
@@ -285,7 +288,9 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMax(1, maxit - its), PETSC_DEFAULT));
         PetscCall(PetscInfo(a->snes, "step %zu: %" PetscInt_FMT " joints solved as linear springs left their linear state; solving on with the full law for them\n", a->steps.size() + 1, nreleased));
         if (a->opt.monitor_states) PetscCall(PetscPrintf(a->comm, "  step %zu: %" PetscInt_FMT " joints solved as linear springs would leave their linear state: solving on with the full law for them\n", a->steps.size() + 1, nreleased));
+        PetscCall(PetscLogStagePush(Events().solve_stage));
         PetscCall(SNESSolve(a->snes, nullptr, Xtry));
+        PetscCall(PetscLogStagePop());
         PetscCall(SNESGetConvergedReason(a->snes, &reason));
         PetscCall(SNESGetIterationNumber(a->snes, &more));
         PetscCall(RecordLinearSolves(a));
