@@ -163,6 +163,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscBool     hasScene, hasDeck;
   PetscInt      subcase = 0;
   PetscReal     tie_penalty = nastran::ModelOptions{}.tie_penalty;
+  PetscBool     bush_offsets = nastran::ModelOptions{}.bush_offsets ? PETSC_TRUE : PETSC_FALSE;
   DriverOptions o;
   Scene         scene;
   PetscFunctionBeginUser;
@@ -192,6 +193,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsInt("-nastran_subcase", "Subcase of the deck to run (0: every subcase, each into the folder subcase-N of the output directory)", "", subcase, &subcase, nullptr));
   PetscCall(PetscOptionsString("-nastran_fasteners", "CSV fastener table turning chosen CBUSH/CFAST into joint types: type and first[,last] (element ids) or pid (PBUSH/PFAST id); the others keep their PBUSH/PFAST spring", "", fasteners, fasteners, sizeof(fasteners), nullptr));
   PetscCall(PetscOptionsReal("-nastran_tie_penalty", "Stiffness of the ties that stand for a grid shared by two shell properties and for RBE2: kn = kt = this x the largest membrane stiffness A11 of the deck's shells, kr = this x the largest D11", "", tie_penalty, &tie_penalty, nullptr));
+  PetscCall(PetscOptionsBool("-nastran_bush_offsets", "Place a CBUSH's spring at S of GA-GB, each grid carrying it by a rigid lever, as Nastran does (false: at the midpoint, each part loaded at its grid without lever)", "", bush_offsets, &bush_offsets, nullptr));
   PetscOptionsEnd();
   PetscCheck(tie_penalty > 0, comm, PETSC_ERR_USER_INPUT, "-nastran_tie_penalty %g must be > 0", (double)tie_penalty);
   PetscCall(SceneCheckOptionValues(comm));
@@ -234,6 +236,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     for (PetscInt id : ids) {
       Source src{&deck, id, {}, fastpath};
       src.options.tie_penalty = tie_penalty;
+      src.options.bush_offsets = bush_offsets == PETSC_TRUE;
       PetscCall(RunOne(src, scene, o, dir + "/subcase-" + std::to_string(id), exitcode, log));
       if (*exitcode || o.helpOnly) break;
     }

@@ -51,7 +51,8 @@ foreach(ranks 1 2)
   # written as a scene (generated plates, spring joints, node coupling), which reaches the model
   # without the Nastran reader: joints.csv equal to round-off, per subcase (requirement: CBUSH
   # become joints with their PBUSH stiffness; SPC and FORCE become conditions).
-  boltnet_deck_run(nastran_lap ${ranks} ${_nm}/lap.bdf -load_max 1 -load_steps 1)
+  # The scene's joints act at their nodes without lever: so do the deck's here.
+  boltnet_deck_run(nastran_lap ${ranks} ${_nm}/lap.bdf -load_max 1 -load_steps 1 -nastran_bush_offsets false)
   # The fastener table turns both CBUSH into frictional macroelements of type 'fric', against the
   # scene whose joints table names that type (requirement: a fastener table turns chosen fasteners
   # into contact or frictional macroelements).
@@ -75,10 +76,30 @@ foreach(ranks 1 2)
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_fric_scene_np${ranks}/joints.csv ${BOLTNET_OUT}/nastran_lap_fric_np${ranks}/subcase-1/joints.csv 1e-9)
   set_tests_properties(nastran_lap_fric_as_scene_np${ranks} PROPERTIES FIXTURES_REQUIRED "nastran_lap_fric_np${ranks};nastran_lap_fric_scene_np${ranks}")
 endforeach()
+# The lap joined by a row of CBUSH whose element axes are turned 45 degrees in the plane, K2 != K3
+# (requirement: a bush keeps its whole stiffness, rotated into the joint frame, and its spring sits
+# at S of GA-GB with a rigid lever from each grid, as Nastran's CBUSH): B's end against the closed
+# form of test/check_nastran_bush.py (the bush's compliance along the load is (1/k2 + 1/k3)/2, the
+# lever bends strip A by F L), with the levers (the default) and without
+# (-nastran_bush_offsets false), on 1, 2 and 3 ranks. rtol 1e-8: the states are exact for the
+# elements (measured 8e-11 and 3e-13 of |ux|).
+foreach(ranks 1 2 3)
+  foreach(mode lever nolever)
+    set(_args -load_max 1 -load_steps 1)
+    if(mode STREQUAL nolever)
+      list(APPEND _args -nastran_bush_offsets false)
+    endif()
+    boltnet_deck_run(nastran_bush45_${mode} ${ranks} ${_nm}/lap-bush45.bdf ${_args})
+    add_test(NAME nastran_bush45_${mode}_exact_np${ranks}
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_nastran_bush.py ${BOLTNET_OUT}/nastran_bush45_${mode}_np${ranks}/subcase-1 ${mode} 1e-8)
+    set_tests_properties(nastran_bush45_${mode}_exact_np${ranks} PROPERTIES FIXTURES_REQUIRED nastran_bush45_${mode}_np${ranks})
+  endforeach()
+endforeach()
+
 # A scene's nastran: section names the deck (relative to the scene) and the subcase: the same results.
 add_test(NAME run_nastran_lap_yaml_np1
   COMMAND ${BOLTNET_EXPECT} --match "results in .*/subcase-2/" --match "There are no unused options" -- ${_drv} -scene ${_nm}/lap-deck.yaml
-          -output_dir ${BOLTNET_OUT}/nastran_lap_yaml_np1 -load_max 1 -load_steps 1 -options_left)
+          -output_dir ${BOLTNET_OUT}/nastran_lap_yaml_np1 -load_max 1 -load_steps 1 -options_left -nastran_bush_offsets false)
 set_tests_properties(run_nastran_lap_yaml_np1 PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips FIXTURES_SETUP nastran_lap_yaml_np1)
 add_test(NAME nastran_lap_yaml_same_np1
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_np1/subcase-2/joints.csv ${BOLTNET_OUT}/nastran_lap_yaml_np1/subcase-2/joints.csv 1e-12)

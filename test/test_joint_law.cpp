@@ -305,6 +305,100 @@ TEST(SpringLaw, LinearInAllComponents)
   }
 }
 
+// A spring with a full stiffness (Params::full): a bush with diagonal stiffness k in element axes
+// a_i (rows of Q, a rotation of the joint frame) has K = Q^T diag(k) Q in the joint frame. The
+// reference force is computed the other way round, without K: rotate the jump into the element
+// axes, scale by k, rotate back. Requirement: a full 6 x 6 stiffness used as is (no averaging, no
+// dropped couplings): force = K jump, tangent = K (both tangents), symmetric, state linear.
+Params fullSpring(const double k[6], const double Q[9])
+{
+  Params p;
+  p.law  = Law::Spring;
+  p.full = 1;
+  p.kn = p.kt = p.kr = 12345; // ignored when full
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double s = 0;
+        for (int m = 0; m < 3; ++m) s += Q[3 * m + i] * k[3 * b + m] * Q[3 * m + j];
+        p.K[6 * (3 * b + i) + 3 * b + j] = s;
+      }
+  return p;
+}
+
+TEST(SpringLaw, FullStiffnessOfARotatedBush)
+{
+  // Element axes: x along n, y and z turned 45 degrees about n in the joint plane (the wing box's
+  // bolts), then a general rotation (30, 50, 70 degrees about three axes).
+  const double c = std::sqrt(0.5);
+  const double Q45[9] = {1, 0, 0, 0, c, c, 0, -c, c};
+  double       Qg[9];
+  {
+    const double a = 0.5236, b = 0.8727, g = 1.2217;
+    const double Rx[9] = {1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a)};
+    const double Ry[9] = {std::cos(b), 0, std::sin(b), 0, 1, 0, -std::sin(b), 0, std::cos(b)};
+    const double Rz[9] = {std::cos(g), -std::sin(g), 0, std::sin(g), std::cos(g), 0, 0, 0, 1};
+    double       T[9]  = {};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int m = 0; m < 3; ++m) T[3 * i + j] += Rx[3 * i + m] * Ry[3 * m + j];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Qg[3 * i + j] = 0;
+        for (int m = 0; m < 3; ++m) Qg[3 * i + j] += T[3 * i + m] * Rz[3 * m + j];
+      }
+  }
+  const double k[6] = {1e9, 1e9, 100, 1e7, 2e7, 3e7};
+  const Vec6   du   = jumpOf(1e-4, -3e-3, 7e-3, 1e-3, -2e-3, 3e-3);
+  for (const double *Q : {Q45, static_cast<const double *>(Qg)}) {
+    const Params p = fullSpring(k, Q);
+    EXPECT_EQ(validate(p), "");
+    Vec6 want{};
+    for (int b = 0; b < 2; ++b) {
+      double e[3] = {};
+      for (int m = 0; m < 3; ++m)
+        for (int j = 0; j < 3; ++j) e[m] += Q[3 * m + j] * du[3 * b + j];
+      for (int i = 0; i < 3; ++i)
+        for (int m = 0; m < 3; ++m) want[3 * b + i] += Q[3 * m + i] * k[3 * b + m] * e[m];
+    }
+    for (Tangent t : {Tangent::Paper, Tangent::Consistent})
+      for (bool frozen : {false, true}) {
+        const Response r = evaluate(p, History{}, du, t, frozen);
+        for (int i = 0; i < 6; ++i) EXPECT_TRUE(Near(r.force[i], want[i], kClosed, 1e9 * 1e-4)) << "component " << i;
+        for (int i = 0; i < 36; ++i) EXPECT_EQ(r.tangent[i], p.K[i]);
+        for (int i = 0; i < 6; ++i)
+          for (int j = 0; j < 6; ++j) EXPECT_NEAR(r.tangent[6 * i + j], r.tangent[6 * j + i], 1e-15 * 1e9); // round-off of Q^T k Q
+        EXPECT_EQ(r.state, State::Linear);
+      }
+    EXPECT_EQ(utilization(p, History{}, du), 0.0);
+  }
+  // The 45-degree bush along t1 alone: force (k2 + k3)/2 du along t1 and (k2 - k3)/2 du along t2
+  // (hand-worked from a_y = (t1 + t2)/sqrt2, a_z = (t2 - t1)/sqrt2), not k2 nor k3.
+  const Response r = evaluate(fullSpring(k, Q45), History{}, jumpOf(0, 1e-3, 0), Tangent::Consistent);
+  EXPECT_TRUE(Near(r.force[1], 0.5 * (1e9 + 100) * 1e-3, kClosed));
+  EXPECT_TRUE(Near(r.force[2], 0.5 * (1e9 - 100) * 1e-3, kClosed));
+  EXPECT_TRUE(Near(r.force[0], 0, kClosed, 1e6));
+}
+
+// validate() refuses a full stiffness that is not symmetric, has a negative diagonal term or a
+// non-finite term, or belongs to a law other than the spring, naming the term.
+TEST(Validate, RejectsABadFullStiffness)
+{
+  const double k[6] = {10, 20, 40, 1, 2, 6}, I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  Params       p    = fullSpring(k, I);
+  p.K[6 * 1 + 2]    = 3;
+  EXPECT_NE(validate(p).find("K[1][2] = 3 and K[2][1] = 0 differ"), std::string::npos) << validate(p);
+  p              = fullSpring(k, I);
+  p.K[6 * 4 + 4] = -2;
+  EXPECT_NE(validate(p).find("K[4][4] = -2 must be >= 0"), std::string::npos) << validate(p);
+  p    = fullSpring(k, I);
+  p.K[0] = std::nan("");
+  EXPECT_NE(validate(p).find("not a finite number"), std::string::npos) << validate(p);
+  p     = fullSpring(k, I);
+  p.law = Law::Friction;
+  EXPECT_NE(validate(p).find("the friction law has its own"), std::string::npos) << validate(p);
+}
+
 // Contact law (paper 2.1), c = 0: F_t = k du_t for r <= j, (k j + k'(r - j)) du_t / r beyond; along a 2D direction.
 TEST(ContactLaw, ClosedFormBothBranches2D)
 {

@@ -68,6 +68,10 @@ void AddParams(Hasher &h, const Params &p)
 {
   h.Add(static_cast<int>(p.law));
   for (double v : {p.kn, p.kt, p.kr, p.kc, p.kg, p.gap, p.mu, p.nf, p.pretension, p.clamp_coupling, p.offset[0], p.offset[1]}) h.Add(v);
+  if (p.full) { // only then: the identities of runs without a full stiffness stay as they were
+    h.Add(p.full);
+    for (double v : p.K) h.Add(v);
+  }
 }
 
 void AddMesh(Hasher &h, const ShellMesh &m)
@@ -165,6 +169,8 @@ PetscErrorCode CheckpointIdentify(BoltnetAssembly a, const std::string &scene, C
       joints.Add(j.R);
       AddParams(joints, j.params);
       joints.Add(j.positioned);
+      joints.Add(j.lever);
+      if (j.lever) joints.Add(j.at_a), joints.Add(j.at_b);
     }
     for (const BCDesc &b : m.bcs) {
       bcs.Add(b.patch);

@@ -84,8 +84,9 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
     if (p.rigid) PetscCall(BoltnetAssemblyAddRigidPatch(a, p.pid, p.x.data()));
     else PetscCall(AssemblyAddShell(a, p.pid, std::move(p.mesh), p.material));
   }
-  // Joints keep their PBUSH/PFAST spring unless the first matching row of the fastener table names
-  // a joint type, whose options (-joint_<type>_*) then give every parameter. Ties (pid 0) keep theirs.
+  // Joints keep their PBUSH/PFAST spring (the full stiffness, with its levers) unless the first
+  // matching row of the fastener table names a joint type, whose options (-joint_<type>_*) then give
+  // every parameter (a macroelement between GA and GB, without lever). Ties (pid 0) keep theirs.
   std::map<std::string, BoltnetJointParams> types;
   for (const nastran::ModelJoint &j : m.joints) {
     const PetscInt pa = m.parts[j.part_a].pid, pb = m.parts[j.part_b].pid;
@@ -100,6 +101,9 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
       rule->used = true;
       if (!types.count(rule->type)) PetscCall(SceneJointType(comm, a, rule->type, j.eid, pa, pb, j.n.data(), j.t1.data(), j.x.data(), &types[rule->type], scene));
       p = types[rule->type];
+    } else if (j.full) { // a bush: its whole stiffness, levered from GA and GB when they differ
+      PetscCall(AssemblyAddFullSpring(a, j.eid, pa, pb, j.K, j.n.data(), j.t1.data(), j.x.data(), j.lever ? j.at_a.data() : nullptr, j.lever ? j.at_b.data() : nullptr));
+      continue;
     } else {
       PetscCall(BoltnetJointParamsSetDefault(BOLTNET_LAW_SPRING, &p));
       p.kn = j.kn, p.kt = j.kt, p.kr = j.kr;

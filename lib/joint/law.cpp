@@ -75,10 +75,19 @@ void linearParts(const Params &p, const Vec6 &du, Response &r)
 
 void evaluateSpring(const Params &p, const Vec6 &du, Response &r)
 {
+  r.state = State::Linear;
+  if (p.full) { // F = K du, tangent K: replaces the diagonal parts linearParts() set
+    for (int i = 0; i < 6; ++i) {
+      double f = 0;
+      for (int k = 0; k < 6; ++k) f += p.K[6 * i + k] * du[k];
+      r.force[i] = f;
+    }
+    std::copy(p.K, p.K + 36, r.tangent.begin());
+    return;
+  }
   r.force[1] = p.kt * du[1];
   r.force[2] = p.kt * du[2];
   setInPlane(r.tangent, {p.kt, 0, 0, p.kt});
-  r.state = State::Linear;
 }
 
 // Paper sect. 2.1: F_t = k du_t for r <= j and (k j + k' (r - j)) du_t / r beyond, written as
@@ -227,6 +236,19 @@ std::string validate(const Params &p)
   nonneg("pretension", p.pretension);
   nonneg("clamp_coupling", p.clamp_coupling);
   if (!msg.str().empty()) return msg.str();
+  if (p.full) {
+    if (p.law != Law::Spring) return std::string("a full stiffness matrix K is a spring's: the ") + lawName(p.law) + " law has its own (kn, kt, kr, ...); ";
+    double scale = 0;
+    for (double v : p.K) scale = std::isfinite(v) ? std::max(scale, std::fabs(v)) : HUGE_VAL;
+    if (!std::isfinite(scale)) return "the full stiffness K has a term that is not a finite number; ";
+    for (int i = 0; i < 6; ++i) {
+      if (p.K[7 * i] < 0) msg << "K[" << i << "][" << i << "] = " << p.K[7 * i] << " must be >= 0; ";
+      for (int k = i + 1; k < 6; ++k)
+        if (std::fabs(p.K[6 * i + k] - p.K[6 * k + i]) > 1e-12 * scale)
+          msg << "K[" << i << "][" << k << "] = " << p.K[6 * i + k] << " and K[" << k << "][" << i << "] = " << p.K[6 * k + i] << " differ: a spring's stiffness is symmetric; ";
+    }
+    return msg.str();
+  }
   if (!std::isfinite(p.offset[0]) || !std::isfinite(p.offset[1])) msg << "offset must be finite; ";
   if (!(p.nf >= 1) || !std::isfinite(p.nf) || p.nf != std::floor(p.nf)) msg << "nf = " << p.nf << " must be a whole number >= 1 (friction interfaces); ";
   if (p.law != Law::Spring && std::hypot(p.offset[0], p.offset[1]) > p.gap)

@@ -36,6 +36,12 @@ struct Params {
   double pretension = 0;     // Pc, bolt clamp force
   double clamp_coupling = 0; // phi: G = mu nf max(0, Pc - phi F_n); 0 reproduces the paper (G constant)
   double offset[2] = {0, 0}; // initial position of the bolt in the hole (t1, t2): centre of the clearance circle
+  // Spring only: a full stiffness, used as is when `full` is set (kn, kt, kr are then not used):
+  // K (6 x 6, row major, the local frame above) maps the jump to the force, F = K du, with every
+  // coupling between the axes kept (a Nastran CBUSH whose element axes are not the joint frame,
+  // docs/nastran.md). Symmetric, its diagonal >= 0 (validate()).
+  int    full = 0;
+  double K[36] = {};
 };
 
 // Committed (or trial) history of one joint: the slip of the friction slider in the joint plane.

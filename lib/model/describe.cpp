@@ -5,6 +5,7 @@
 #include "core/guard.hpp"
 #include "io/limits.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -165,6 +166,23 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh
   ShellPart &sp = a->model.shells[pos];
   sp.mesh       = std::move(mesh);
   sp.material   = material;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyAddFullSpring(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const std::array<double, 36> &K, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3], const PetscReal *at_a, const PetscReal *at_b)
+{
+  BoltnetJointParams p;
+  PetscFunctionBeginUser;
+  PetscCall(BoltnetJointParamsSetDefault(BOLTNET_LAW_SPRING, &p));
+  PetscCall(BoltnetAssemblyAddJointAt(a, id, patch_a, patch_b, &p, normal, t1, x));
+  JointDesc &j = a->model.joints.back();
+  j.params.full = 1;
+  std::copy(K.begin(), K.end(), j.params.K);
+  const std::string bad = validate(j.params);
+  if (!bad.empty()) a->model.joints.pop_back(); // a refused call leaves the assembly unchanged
+  PetscCheck(bad.empty(), a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " (spring with a full stiffness): %s", id, bad.c_str());
+  j.lever = at_a && at_b;
+  for (int k = 0; k < 3 && j.lever; ++k) j.at_a[k] = at_a[k], j.at_b[k] = at_b[k];
   PetscFunctionReturn(0);
 }
 } // namespace boltnet

@@ -38,6 +38,10 @@ struct JointDesc {
   std::array<double, 9> R;              // local frame rows (n, t1, t2)
   Params                params;
   bool                  positioned = false; // x was given: on a rigid patch the joint acts there
+  // A lever (AssemblyAddFullSpring): side a attaches at at_a (node coupling: the nearest node), b at
+  // at_b, each carrying the joint at x through a rigid lever (docs/joint-laws.md, "Where a joint acts").
+  bool                  lever = false;
+  std::array<double, 3> at_a{}, at_b{};
 };
 
 struct BCDesc {

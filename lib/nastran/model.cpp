@@ -40,32 +40,21 @@ Vec3 ElementNormal(const Deck &d, const Shell &e)
   return Unit(Cross(Sub(X(1), X(0)), Sub(X(2), X(0))));
 }
 
-// The spring stiffnesses of a joint frame (n, t1, t2) from a bush's diagonal stiffness k (1-3
-// translations, 4-6 rotations) in its element axes: K = sum k_i a_i a_i^T projected on the frame.
-// boltnet's spring has one in-plane stiffness kt and one rotational kr (docs/joint-laws.md): kt is
-// the mean of the two in-plane values and kr the mean of the three rotational ones; what this
-// changes is reported once per property.
-void Stiffness(const Axes &axes, const std::array<double, 6> &k, const Vec3 &n, const Vec3 &t1, ModelJoint &j, std::string &change)
+// A bush's stiffness in a joint frame (n, t1, t2 = n x t1): K = sum k_i a_i a_i^T over its element
+// axes a_i (k 1-3 translations, 4-6 rotations, Nastran's K1-K6), K_frame = E K E^T with E the
+// frame's rows, per 3 x 3 block; nothing averaged or dropped (docs/nastran.md, "From a deck to a model").
+std::array<double, 36> FrameStiffness(const Axes &axes, const std::array<double, 6> &k, const Vec3 &n, const Vec3 &t1)
 {
-  const Vec3 t2 = Cross(n, t1);
-  const auto q  = [&](int first, const Vec3 &u, const Vec3 &v) {
-    double s = 0;
-    for (int i = 0; i < 3; ++i) s += k[first + i] * Dot(axes[i], u) * Dot(axes[i], v);
-    return s;
-  };
-  j.kn = q(0, n, n);
-  const double kt1 = q(0, t1, t1), kt2 = q(0, t2, t2);
-  j.kt = 0.5 * (kt1 + kt2);
-  const double r[3] = {q(3, n, n), q(3, t1, t1), q(3, t2, t2)};
-  j.kr = (r[0] + r[1] + r[2]) / 3;
-  const double coupling = std::max({std::fabs(q(0, n, t1)), std::fabs(q(0, n, t2)), std::fabs(q(0, t1, t2))});
-  const double scale = std::max({std::fabs(j.kn), std::fabs(kt1), std::fabs(kt2), 1e-300});
-  std::ostringstream m;
-  if (std::fabs(kt1 - kt2) > 1e-6 * std::max(std::fabs(kt1), std::fabs(kt2))) m << "in-plane stiffnesses " << kt1 << " and " << kt2 << " averaged to kt = " << j.kt << "; ";
-  if (*std::max_element(r, r + 3) - *std::min_element(r, r + 3) > 1e-6 * std::fabs(*std::max_element(r, r + 3)))
-    m << "rotational stiffnesses " << r[0] << ", " << r[1] << ", " << r[2] << " (about n, t1, t2) averaged to kr = " << j.kr << "; ";
-  if (coupling > 1e-6 * scale) m << "stiffness coupling between the joint axes (up to " << coupling << ") dropped; ";
-  if (change.empty()) change = m.str();
+  const Vec3             e[3] = {n, t1, Cross(n, t1)};
+  std::array<double, 36> K{};
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 3; ++i)
+      for (int j = i; j < 3; ++j) { // the upper triangle, mirrored: symmetric to the bit
+        double s = 0;
+        for (int m = 0; m < 3; ++m) s += k[3 * b + m] * Dot(axes[m], e[i]) * Dot(axes[m], e[j]);
+        K[6 * (3 * b + i) + 3 * b + j] = K[6 * (3 * b + j) + 3 * b + i] = s;
+      }
+  return K;
 }
 
 // A joint frame: n the shell normal at the grid (mean of the normals of part `part`'s elements on
@@ -264,9 +253,11 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
     return Unit(n);
   };
 
-  // Joints: a CBUSH joins the parts of GA and GB at their midpoint; n is the shell normal at GA (at
-  // GB if GA is a rigid part; the element x axis between two rigid parts).
-  std::map<int, std::string> changed; // PBUSH/PFAST id -> how its stiffness was represented
+  // Joints: a CBUSH joins the parts of GA and GB; its spring acts at the point S of GA-GB (Nastran's
+  // offset; the midpoint without bush_offsets), each grid carrying it by a rigid lever; n is the
+  // shell normal at GA (at GB if GA is a rigid part; the element x axis between two rigid parts).
+  std::map<int, std::string> changed; // PBUSH/PFAST id -> what the model assumed for it
+  std::map<int, std::pair<int, double>> levers; // PBUSH id -> CBUSH with a lever, the longest GA-GB
   std::vector<const Bush *> bushes;
   for (const Bush &b : d.bushes) bushes.push_back(&b);
   std::sort(bushes.begin(), bushes.end(), [](const Bush *a, const Bush *b) { return a->id < b->id; });
@@ -274,17 +265,24 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
     const Bush &b = *bp;
     const std::string what = "CBUSH " + std::to_string(b.id);
     if (owner[b.na] == owner[b.nb]) Fail(d, b.src, "CBUSH", what + ": GA and GB (grids " + std::to_string(b.ga) + ", " + std::to_string(b.gb) + ") are both on shells of property " + std::to_string(m.parts[owner[b.na]].pid) + ": a boltnet joint joins two different parts");
+    // OCID >= 0 places the spring at S1-S3 in that system: not modelled (refused, never dropped).
+    if (b.ocid >= 0 && options.bush_offsets)
+      Fail(d, b.src, "CBUSH", what + ", field OCID = " + std::to_string(b.ocid) + " (S1-S3 " + Num(b.offset[0]) + ", " + Num(b.offset[1]) + ", " + Num(b.offset[2]) +
+                                  "): a spring offset in a coordinate system is not supported; boltnet places the spring at S of GA-GB (OCID = -1, docs/nastran.md)");
     ModelJoint j;
     j.eid = b.id, j.pid = b.pid, j.part_a = owner[b.na], j.part_b = owner[b.nb];
-    const Vec3 xa = d.grids[b.na].x, xb = d.grids[b.nb].x;
-    for (int k = 0; k < 3; ++k) j.x[k] = 0.5 * (xa[k] + xb[k]);
+    const Vec3   xa = d.grids[b.na].x, xb = d.grids[b.nb].x;
+    const double s  = options.bush_offsets ? b.s : 0.5;
+    for (int k = 0; k < 3; ++k) j.x[k] = xa[k] + s * (xb[k] - xa[k]);
+    j.lever = options.bush_offsets && b.length > 0, j.at_a = xa, j.at_b = xb;
+    if (j.lever) {
+      auto &l = levers.emplace(b.pid, std::pair<int, double>{b.id, 0}).first->second;
+      l.second = std::max(l.second, b.length);
+    }
     const Vec3 n = !m.parts[j.part_a].rigid ? normal_at(j.part_a, b.na) : !m.parts[j.part_b].rigid ? normal_at(j.part_b, b.nb) : b.axes[0];
     Frame(n, b.axes, j.n, j.t1);
     const PBush &pb = d.pbushes[d.pbush_index.at(b.pid)];
-    std::string &c = changed[b.pid];
-    std::string  ch;
-    Stiffness(b.axes, pb.k, j.n, j.t1, j, ch);
-    if (c.empty() && !ch.empty()) c = "PBUSH " + std::to_string(b.pid) + " (first at CBUSH " + std::to_string(b.id) + "): " + ch;
+    j.full = true, j.K = FrameStiffness(b.axes, pb.k, j.n, j.t1);
     m.joints.push_back(j);
   }
   // A CFAST joins its two properties (TYPE PROP) or the properties of its two elements (ELEM) at
@@ -317,14 +315,17 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
     axes[2] = Cross(axes[0], axes[1]);
     Frame(n, axes, j.n, j.t1);
     const PFast &pf = d.pfasts[d.pfast_index.at(f.pid)];
-    std::string &c = changed[-f.pid];
-    std::string  ch;
-    Stiffness(axes, pf.k, j.n, j.t1, j, ch);
-    if (c.empty() && !ch.empty()) c = "PFAST " + std::to_string(f.pid) + " (first at CFAST " + std::to_string(f.id) + "): " + ch;
+    if (pf.mcid >= 0) Fail(d, pf.src, "PFAST", "PFAST " + std::to_string(pf.id) + ", field MCID = " + std::to_string(pf.mcid) + ": stiffness axes from a coordinate system are not supported (boltnet: KT1 along the shell normal at GS, docs/nastran.md)");
+    j.full = true, j.K = FrameStiffness(axes, pf.k, j.n, j.t1);
+    std::string &c = changed[f.pid];
+    if (c.empty())
+      c = "PFAST " + std::to_string(f.pid) + " (first at CFAST " + std::to_string(f.id) + "): the spring acts between the nodes of the two parts nearest GS/XS, without lever" +
+          (pf.k[1] != pf.k[2] || pf.k[4] != pf.k[5] ? std::string("; KT2/KT3 (KR2/KR3) along n x X (or n x Y) and n x that (MCID = -1 taken so)") : std::string());
     m.joints.push_back(j);
   }
-  for (const auto &[pid, c] : changed)
-    if (!c.empty()) m.notes.push_back(c);
+  for (const auto &[pid, l] : levers)
+    m.notes.push_back("PBUSH " + std::to_string(pid) + " (first at CBUSH " + std::to_string(l.first) + "): springs at S of GA-GB, each grid carrying its spring by a rigid lever (GA-GB up to " + Num(l.second) + " long)");
+  for (const auto &[pid, c] : changed) m.notes.push_back(c);
 
   // Ties: shared grids (each copy to the owner's node) and RBE2 (GN's rigid part to each GM grid),
   // at the grid, with the penalty stiffness of ModelOptions.

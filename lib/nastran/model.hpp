@@ -32,14 +32,22 @@ struct ModelPart {
   std::vector<int>     grids;
 };
 
-// A CBUSH or CFAST between two parts (positions in DeckModel::parts), with the spring stiffnesses
-// of docs/joint-laws.md that its PBUSH/PFAST gives (K projected on the joint frame, "Joints").
+// A CBUSH or CFAST between two parts (positions in DeckModel::parts), or a tie. A bush's stiffness
+// is its PBUSH/PFAST's K = sum K_i a_i a_i^T over its element axes a_i, rotated into the joint frame
+// (n, t1, t2 = n x t1) and kept whole (`K`, 6 x 6 row major: translations then rotations); a tie
+// is boltnet's isotropic spring (kn, kt, kr).
 struct ModelJoint {
   int    eid = 0, pid = 0; // pid 0: a tie
   bool   fast = false;     // CFAST (else CBUSH or a tie)
   int    part_a = -1, part_b = -1;
-  Vec3   x{}, n{}, t1{};
-  double kn = 0, kt = 0, kr = 0;
+  Vec3   x{}, n{}, t1{};   // x: where the spring acts (a CBUSH's point S of GA-GB)
+  double kn = 0, kt = 0, kr = 0;  // a tie's spring
+  bool   full = false;            // a bush: K below
+  std::array<double, 36> K{};
+  // A CBUSH whose grids differ: each side attaches at its grid (at_a = GA, at_b = GB) and carries
+  // the spring at x through a rigid lever, as Nastran's CBUSH does (ModelOptions::bush_offsets).
+  bool   lever = false;
+  Vec3   at_a{}, at_b{};
 };
 
 enum class ModelBCKind { Fixed, Displacement, Force };
@@ -70,8 +78,13 @@ const Subcase &FindSubcase(const Deck &deck, int id);
 // of two properties (each part has its own node there, tied to the first part's), and an RBE2
 // (its GN a rigid part, tied to each GM grid). A tie is a spring joint with kn = kt = penalty x
 // the largest membrane stiffness A11 of the deck's shell parts and kr = penalty x their largest D11.
+// bush_offsets: a CBUSH's spring acts at S of GA-GB (Nastran's offset, OCID = -1), each grid
+// carrying it through a rigid lever (a shear F then loads GA and GB with the moments of F about
+// them); false: at the midpoint, each part loaded at its grid without lever (a scene's node-coupled
+// joint).
 struct ModelOptions {
   double tie_penalty = 1000;
+  bool   bush_offsets = true;
 };
 
 // The model of subcase `subcase`. Throws nastran::Error for cards boltnet does not model (RBE3, an

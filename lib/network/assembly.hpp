@@ -179,6 +179,12 @@ namespace boltnet {
 
 // A shell part from a mesh (node sets included) and a section (model/describe.cpp).
 PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material);
+// A linear spring joint with a full stiffness K (6 x 6, row major, in the joint frame n, t1,
+// t2 = n x t1: Params::full) acting at x (model/describe.cpp). With at_a and at_b (both or
+// neither), side a attaches at the point at_a (node coupling: the part's node nearest it; a rigid
+// part: its node) and carries the spring at x by a rigid lever, and side b likewise: a Nastran
+// CBUSH between grids that do not coincide (docs/nastran.md).
+PetscErrorCode AssemblyAddFullSpring(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const std::array<double, 36> &K, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3], const PetscReal *at_a = nullptr, const PetscReal *at_b = nullptr);
 
 // The network (network/build.cpp): lays the model out, builds and distributes the DMNetwork,
 // builds (and condenses) the operators of the owned patches and seams, the Jacobian and the

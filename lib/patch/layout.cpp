@@ -90,7 +90,9 @@ PetscErrorCode AttachJoints(MPI_Comm comm, Model &m, const LayoutOptions &o, std
       jn.x    = j.x;
       jn.axis = {j.R[0], j.R[1], j.R[2]};
       if (o.coupling == CouplingType::Node) {
-        const int nd = finder->NearestNode(jn.x, jn.axis);
+        // A levered joint attaches at its side's own point (a CBUSH's GA or GB), not at x.
+        const std::array<double, 3> at = j.lever ? (side ? j.at_b : j.at_a) : jn.x;
+        const int nd = finder->NearestNode(at, jn.axis);
         PetscCheck(nd >= 0 && (finder->ContainingElement(jn.x, jn.axis) >= 0 || !finder->Footprint(jn.x, jn.axis, o.radius).empty()), comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " at (%g, %g, %g) mm: no element of patch %" PetscInt_FMT " contains it and no node lies within %g mm (-coupling_radius): the joint is outside the part", j.id, j.x[0], j.x[1], j.x[2], pid, o.radius);
         jnode[2 * ji + side] = nd;
         continue;
@@ -333,6 +335,13 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
       const PartDesc &part = m.parts[m.Find(side ? d.part_b : d.part_a)];
       PetscReal      *off  = side ? j.db : j.da;
       for (int k = 0; k < 3; ++k) off[k] = (part.kind == PatchKind::Rigid && d.positioned) ? d.x[k] - part.x[k] : 0.0;
+      // A levered joint on a shell part with node coupling: the node carries x by a rigid lever,
+      // as a rigid patch's node does (with a footprint the joint node is at x already).
+      if (part.kind == PatchKind::Shell && d.lever && o.coupling == CouplingType::Node) {
+        const ShellPatch &sp = L->shells.at(side ? j.vb : j.va);
+        const PetscInt    pn = side ? j.pnode_b : j.pnode_a;
+        for (int k = 0; k < 3; ++k) off[k] = d.x[k] - sp.mesh.x[pn][k];
+      }
     }
     L->joints.push_back(j);
   }
