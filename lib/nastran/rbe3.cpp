@@ -1,0 +1,197 @@
+// RBE3 as a load distribution (rbe3.hpp; docs/nastran.md, "RBE3").
+#include "nastran/rbe3.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace boltnet::nastran {
+
+namespace {
+
+using Vec6 = std::array<double, 6>;
+using Mat6 = std::array<Vec6, 6>;
+
+Vec3   Cross(const Vec3 &a, const Vec3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+double Dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+[[noreturn]] void Fail(const Deck &d, const Rbe3 &e, const std::string &what)
+{
+  throw Error(d.Where(e.src) + ": RBE3 " + std::to_string(e.id) + ": " + what, e.src.file >= 0 ? d.files[e.src.file] : "", e.src.line, "RBE3", 0);
+}
+
+// One independent component k: its grid (index), weight w_k, direction d_k (basic) and the row
+// s_k = (d_k, r_k x d_k) of the rigid-body map from REFGRID's motion to that component.
+struct Component {
+  int    node = -1;
+  double w = 0;
+  Vec3   d{};
+  Vec6   s{};
+};
+
+// The least-squares system of an RBE3: A = sum w_k s_k s_k^T in the scaled unknowns (u, theta L),
+// L the weighted root-mean-square distance of the independent grids from REFGRID (1 if they all sit
+// on it), so that its eigenvalues compare forces with forces; A = V diag(lambda) V^T.
+struct System {
+  std::vector<Component> comps;
+  double                 length = 1;
+  Vec6                   lambda{};
+  Mat6                   v{}; // v[i][j]: component i of eigenvector j
+  double                 tol = 0;
+};
+
+// Eigenvalues and eigenvectors of a symmetric 6 x 6 matrix by cyclic Jacobi rotations (Golub and
+// Van Loan, Matrix Computations, 8.5): converges to round-off in a few sweeps at this size.
+void Eigen(Mat6 a, Vec6 &lambda, Mat6 &v)
+{
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) v[i][j] = i == j;
+  for (int sweep = 0; sweep < 50; ++sweep) {
+    double off = 0, diag = 0;
+    for (int i = 0; i < 6; ++i) {
+      diag += a[i][i] * a[i][i];
+      for (int j = i + 1; j < 6; ++j) off += a[i][j] * a[i][j];
+    }
+    if (off <= 1e-32 * diag) break;
+    for (int p = 0; p < 6; ++p)
+      for (int q = p + 1; q < 6; ++q) {
+        if (a[p][q] == 0) continue;
+        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+        const double t = (theta >= 0 ? 1 : -1) / (std::fabs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+        for (int k = 0; k < 6; ++k) { // columns p, q of A J
+          const double akp = a[k][p], akq = a[k][q];
+          a[k][p] = c * akp - s * akq, a[k][q] = s * akp + c * akq;
+        }
+        for (int k = 0; k < 6; ++k) { // rows p, q of J^T (A J)
+          const double apk = a[p][k], aqk = a[q][k];
+          a[p][k] = c * apk - s * aqk, a[q][k] = s * apk + c * aqk;
+        }
+        for (int k = 0; k < 6; ++k) {
+          const double vkp = v[k][p], vkq = v[k][q];
+          v[k][p] = c * vkp - s * vkq, v[k][q] = s * vkp + c * vkq;
+        }
+      }
+  }
+  for (int i = 0; i < 6; ++i) lambda[i] = a[i][i];
+}
+
+System Build(const Deck &d, const Rbe3 &e)
+{
+  System     sys;
+  const Vec3 xr = d.grids[d.GridIndex(e.refgrid)].x;
+  double     wsum = 0, wr2 = 0;
+  for (const Rbe3::Group &g : e.groups)
+    for (int gid : g.grids) {
+      const Grid &grid = d.grids[d.GridIndex(gid)];
+      const Vec3  r{grid.x[0] - xr[0], grid.x[1] - xr[1], grid.x[2] - xr[2]};
+      for (int c = 0; c < 3; ++c) {
+        if (!(g.c >> c & 1u)) continue;
+        Component k;
+        k.node = d.GridIndex(gid), k.w = g.weight, k.d = grid.cd_axes[c];
+        const Vec3 m = Cross(r, k.d);
+        k.s = {k.d[0], k.d[1], k.d[2], m[0], m[1], m[2]};
+        sys.comps.push_back(k);
+        wsum += k.w, wr2 += k.w * Dot(r, r);
+      }
+    }
+  if (wsum > 0 && wr2 > 0) sys.length = std::sqrt(wr2 / wsum);
+  Mat6 a{};
+  for (const Component &k : sys.comps) {
+    Vec6 s = k.s;
+    for (int i = 3; i < 6; ++i) s[i] *= sys.length;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) a[i][j] += k.w * s[i] * s[j];
+  }
+  Eigen(a, sys.lambda, sys.v);
+  sys.tol = 1e-10 * *std::max_element(sys.lambda.begin(), sys.lambda.end());
+  return sys;
+}
+
+// The unit direction (translation or rotation) of REFGRID's component c (0..5) in the basic system.
+Vec6 RefDirection(const Deck &d, const Rbe3 &e, int c)
+{
+  const Vec3 &a = d.grids[d.GridIndex(e.refgrid)].cd_axes[c % 3];
+  return c < 3 ? Vec6{a[0], a[1], a[2], 0, 0, 0} : Vec6{0, 0, 0, a[0], a[1], a[2]};
+}
+
+} // namespace
+
+void CheckRbe3(const Deck &d, const Rbe3 &e)
+{
+  for (size_t i = 0; i < e.groups.size(); ++i)
+    if (e.groups[i].c & ~7u)
+      Fail(d, e, "C" + std::to_string(i + 1) + " = " + DofString(e.groups[i].c) +
+                   ": boltnet supports translational independent components only (Ci within 123, which the Quick Reference Guide recommends for most uses); rotations at the Gi,j would need their weights put against the translations' through a length, which the card leaves open");
+  if (!e.um.empty())
+    Fail(d, e, "UM (grid " + std::to_string(e.um[0].first) + " component(s) " + DofString(e.um[0].second) +
+                 "): boltnet uses an RBE3 only to move loads from a REFGRID that nothing else connects, where moving the dependent components changes nothing; remove the UM fields");
+  for (const Rbe3::Group &g : e.groups)
+    for (int gid : g.grids)
+      if (gid == e.refgrid) Fail(d, e, "REFGRID " + std::to_string(e.refgrid) + " is also one of its independent grids");
+  const System sys = Build(d, e);
+  if (!(sys.tol > 0)) Fail(d, e, "its independent components have no weight");
+  std::string missing;
+  for (int c = 0; c < 6; ++c) {
+    if (!(e.refc >> c & 1u)) continue;
+    const Vec6 dir = RefDirection(d, e, c);
+    for (int j = 0; j < 6; ++j) {
+      if (sys.lambda[j] > sys.tol) continue;
+      double p = 0;
+      for (int i = 0; i < 6; ++i) p += sys.v[i][j] * dir[i];
+      if (std::fabs(p) > 1e-6) {
+        missing += std::to_string(c + 1);
+        break;
+      }
+    }
+  }
+  if (!missing.empty())
+    Fail(d, e, "its independent components (Ci at the grids Gi,j) cannot carry REFC component(s) " + missing + " of REFGRID " + std::to_string(e.refgrid) +
+                 ": the weighted least-squares fit of REFGRID's motion is singular there (Nastran: the Ci must react the rigid-body motion of REFC; grids on one line with translations only carry no moment about that line)");
+}
+
+std::vector<NodalLoad> DistributeRbe3(const Deck &d, const Rbe3 &e, const Vec3 &force, const Vec3 &moment, int subcase)
+{
+  const System sys = Build(d, e);
+  const Vec6   p{force[0], force[1], force[2], moment[0], moment[1], moment[2]};
+  // Components outside REFC (in REFGRID's displacement system) would stay on REFGRID.
+  const double scale = std::sqrt(Dot(force, force)) + std::sqrt(Dot(moment, moment)) / sys.length;
+  for (int c = 0; c < 6; ++c) {
+    if (e.refc >> c & 1u) continue;
+    const Vec6 dir = RefDirection(d, e, c);
+    double     pc = 0;
+    for (int i = 0; i < 6; ++i) pc += dir[i] * p[i];
+    if (std::fabs(pc) > 1e-12 * scale) {
+      std::ostringstream m;
+      m << "subcase " << subcase << ": REFGRID " << e.refgrid << " carries load component " << c + 1 << " (" << pc << ") which REFC = " << DofString(e.refc)
+        << " does not contain: Nastran leaves it on REFGRID, which nothing else connects; add the component to REFC or load other grids";
+      Fail(d, e, m.str());
+    }
+  }
+  // v = A^-1 P on the range of A (CheckRbe3 made sure REFC, hence P, lies in it), scaled unknowns.
+  Vec6 ps = p;
+  for (int i = 3; i < 6; ++i) ps[i] *= sys.length;
+  Vec6 v{};
+  for (int j = 0; j < 6; ++j) {
+    if (sys.lambda[j] <= sys.tol) continue;
+    double c = 0;
+    for (int i = 0; i < 6; ++i) c += sys.v[i][j] * ps[i];
+    for (int i = 0; i < 6; ++i) v[i] += c / sys.lambda[j] * sys.v[i][j];
+  }
+  for (int i = 3; i < 6; ++i) v[i] *= sys.length;
+  std::map<int, NodalLoad> by;
+  for (const Component &k : sys.comps) {
+    double f = 0;
+    for (int i = 0; i < 6; ++i) f += k.s[i] * v[i];
+    f *= k.w;
+    NodalLoad &l = by[k.node];
+    l.node = k.node;
+    for (int j = 0; j < 3; ++j) l.force[j] += f * k.d[j];
+  }
+  std::vector<NodalLoad> out;
+  for (auto &[node, l] : by) out.push_back(l);
+  return out;
+}
+
+} // namespace boltnet::nastran

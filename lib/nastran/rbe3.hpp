@@ -1,0 +1,35 @@
+// RBE3 as a load distribution (docs/nastran.md, "RBE3"). Pure C++; throws nastran::Error naming the
+// card.
+//
+// Nastran's RBE3 (Quick Reference Guide, RBE3) makes the components REFC of REFGRID the weighted
+// least-squares average of the components Ci of the grids Gi,j: with v = (u, theta) the rigid motion
+// of REFGRID and s_k = (d_k, r_k x d_k) for independent component k (direction d_k, grid offset
+// r_k = x_k - x_ref, weight w_k), v solves A v = sum w_k s_k u_k, A = sum w_k s_k s_k^T. It adds no
+// stiffness. By virtual work a load P = (F, M) on REFGRID acts on the independent components as
+// f_k = w_k s_k . A^-1 P, which keeps the resultant and its moment: sum f_k s_k = P.
+//
+// boltnet uses an RBE3 this way only: REFGRID must be connected to nothing but the RBE3 (model.cpp
+// checks that) and the loads on it are moved to the independent grids here.
+#pragma once
+
+#include "nastran/deck.hpp"
+#include "nastran/expand.hpp"
+
+#include <vector>
+
+namespace boltnet::nastran {
+
+// What boltnet supports of the card itself: translational independent components (Ci within 123,
+// any subset, per group, in each grid's displacement system), no UM, REFGRID not among its own
+// independent grids, and independent components that can carry every component REFC (Nastran's
+// remark: the Ci at the Gi,j must react the rigid-body motion of REFC; collinear grids with
+// translations only cannot carry a moment about their line). Throws naming the card and its place.
+void CheckRbe3(const Deck &deck, const Rbe3 &rbe3);
+
+// The forces at the independent grids (basic system, one entry per grid, sorted by grid index) that
+// stand for `force` and `moment` (basic) on REFGRID. A load component that REFC does not contain
+// (in REFGRID's displacement system) is refused: Nastran leaves it on REFGRID, which boltnet does
+// not model. `subcase` only names the subcase in that message.
+std::vector<NodalLoad> DistributeRbe3(const Deck &deck, const Rbe3 &rbe3, const Vec3 &force, const Vec3 &moment, int subcase);
+
+} // namespace boltnet::nastran
