@@ -233,8 +233,10 @@ TEST(Model, Rbe3Refusals)
     {"rotational-ci", Rbe3Deck("RBE3,10,,100,123456,1.,123456,1,2,3\n"), "RBE3 10: C1 = 123456: boltnet supports translational independent components only"},
     {"um", Rbe3Deck("RBE3,10,,100,123,1.,123,1,2,3\n,4,UM,1,123\n"), "RBE3 10: UM (grid 1 component(s) 123)"},
     {"spc", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,4\n", "SPC1,1,3,100\n"), "RBE3 10: REFGRID 100 has components 3 of REFC constrained in subcase 1"},
-    {"shell", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,4\n", "CQUAD4,3,1,5,100,6,3\n"), "RBE3 10: REFGRID 100 is a grid of the shells of property 1"},
+    {"shell", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,4\n", "CQUAD4,3,1,5,100,6,3\n"), "RBE3 10: REFGRID 100 is a grid of CQUAD4 3 at"},
     {"bush", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,4\n", "PBUSH,7,K,1.\nCBUSH,9,7,100,6,1.,0.,0.\n"), "RBE3 10: REFGRID 100 is a grid of CBUSH 9 at"},
+    {"rbe2", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,4\n", "RBE2,11,100,123456,6\n"), "RBE3 10: REFGRID 100 is GN of RBE2 11 at"},
+    {"twice", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,4\n", "RBE3,12,,100,123456,1.,123,3,4\n,5,6\n"), "RBE3 12: REFGRID 100 is also REFGRID of RBE3 10 at"},
     {"own-grid", Rbe3Deck("RBE3,10,,100,123456,1.,123,1,2\n,3,100\n"), "RBE3 10: REFGRID 100 is also one of its independent grids"},
   };
   for (const auto &c : cases) {

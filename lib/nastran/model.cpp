@@ -226,46 +226,10 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
   const std::vector<Constraint> spc = ExpandSpc(d, sc.spc);
   std::vector<bool>             constrained(d.grids.size(), false);
   for (const Constraint &c : spc) constrained[c.node] = true;
-  // RBE3: boltnet uses it as Nastran does for a REFGRID that nothing but the RBE3 connects: the loads
-  // on REFGRID move to the independent grids (rbe3.hpp). REFGRID connected to anything else (a shell,
-  // a bush, an RBE2, another RBE3, an SPC on a REFC component) would need the constraint itself,
-  // which boltnet does not model: refused, naming both cards.
-  std::map<int, const Rbe3 *> refgrid; // REFGRID's grid index -> its RBE3
-  const auto rbe3_fail = [&](const Rbe3 &e, const std::string &what) {
-    Fail(d, e.src, "RBE3", "RBE3 " + std::to_string(e.id) + ": REFGRID " + std::to_string(e.refgrid) + " " + what +
-                             ": boltnet supports an RBE3 whose REFGRID is connected to nothing else and only carries loads (FORCE, MOMENT), which it moves to the independent grids (docs/nastran.md, \"RBE3\")");
-  };
-  for (const Rbe3 &e : d.rbe3s) {
-    CheckRbe3(d, e);
-    const int g = d.GridIndex(e.refgrid);
-    const auto [it, fresh] = refgrid.emplace(g, &e);
-    if (!fresh) rbe3_fail(e, "is also REFGRID of RBE3 " + std::to_string(it->second->id) + " at " + d.Where(it->second->src));
-    if (owner[g] >= 0) rbe3_fail(e, "is a grid of the shells of property " + std::to_string(m.parts[owner[g]].pid));
-  }
-  for (const Rbe3 &e : d.rbe3s)
-    for (const Rbe3::Group &grp : e.groups)
-      for (int gid : grp.grids) {
-        const auto it = refgrid.find(d.GridIndex(gid));
-        if (it != refgrid.end()) rbe3_fail(*it->second, "is an independent grid of RBE3 " + std::to_string(e.id) + " at " + d.Where(e.src));
-      }
-  for (const Bush &b : d.bushes)
-    for (int g : {b.na, b.nb}) {
-      const auto it = g >= 0 ? refgrid.find(g) : refgrid.end();
-      if (it != refgrid.end()) rbe3_fail(*it->second, "is a grid of CBUSH " + std::to_string(b.id) + " at " + d.Where(b.src));
-    }
-  for (const Rbe2 &r : d.rbe2s) {
-    std::vector<int> gs{r.gn};
-    gs.insert(gs.end(), r.gm.begin(), r.gm.end());
-    for (int gid : gs) {
-      const auto it = refgrid.find(d.GridIndex(gid));
-      if (it != refgrid.end()) rbe3_fail(*it->second, "is a grid of RBE2 " + std::to_string(r.id) + " at " + d.Where(r.src));
-    }
-  }
-  for (const Constraint &c : spc) {
-    const auto it = refgrid.find(c.node);
-    if (it != refgrid.end() && (c.dofs & it->second->refc))
-      rbe3_fail(*it->second, "has components " + DofString(c.dofs & it->second->refc) + " of REFC constrained in subcase " + std::to_string(sc.id) + " (SPC " + std::to_string(sc.spc) + " or GRID PS; Nastran refuses a constraint on a dependent component unless UM makes it independent)");
-  }
+  // RBE3: only as a load distribution from a REFGRID that nothing else connects (rbe3.hpp).
+  std::vector<bool> on_shell(d.grids.size());
+  for (size_t g = 0; g < d.grids.size(); ++g) on_shell[g] = owner[g] >= 0;
+  const std::map<int, const Rbe3 *> refgrid = Rbe3ByRefgrid(d, on_shell, spc, sc);
   const auto rigid = [&](int g) {
     if (owner[g] >= 0) return;
     ModelPart p;
@@ -447,31 +411,7 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
   // the grid's first part.
   StaticLoad load = ExpandLoad(d, sc.load);
   PressuresToNodal(d, load.pressures, load.nodal);
-  if (!refgrid.empty()) {
-    // A load on a REFGRID becomes forces at its RBE3's independent grids (same resultant and moment).
-    std::map<int, NodalLoad> by;
-    const auto add = [&](const NodalLoad &l) {
-      NodalLoad &t = by[l.node];
-      t.node = l.node;
-      for (int j = 0; j < 3; ++j) t.force[j] += l.force[j], t.moment[j] += l.moment[j];
-    };
-    for (const NodalLoad &l : load.nodal) {
-      const auto it = refgrid.find(l.node);
-      if (it == refgrid.end()) {
-        add(l);
-        continue;
-      }
-      const Rbe3 &e = *it->second;
-      const std::vector<NodalLoad> shares = DistributeRbe3(d, e, l.force, l.moment, sc.id);
-      for (const NodalLoad &f : shares) add(f);
-      std::ostringstream note;
-      note << "subcase " << sc.id << ": RBE3 " << e.id << ": the load on REFGRID " << e.refgrid << " (force [" << l.force[0] << ", " << l.force[1] << ", " << l.force[2] << "], moment [" << l.moment[0] << ", "
-           << l.moment[1] << ", " << l.moment[2] << "]) moved to its " << shares.size() << " independent grid(s)";
-      m.notes.push_back(note.str());
-    }
-    load.nodal.clear();
-    for (const auto &[node, l] : by) load.nodal.push_back(l);
-  }
+  MoveRbe3Loads(d, refgrid, sc.id, load.nodal, m.notes);
   for (const NodalLoad &l : load.nodal) {
     const Grid &g = d.grids[l.node];
     bool any = false;

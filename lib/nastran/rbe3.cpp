@@ -194,4 +194,69 @@ std::vector<NodalLoad> DistributeRbe3(const Deck &d, const Rbe3 &e, const Vec3 &
   return out;
 }
 
+std::map<int, const Rbe3 *> Rbe3ByRefgrid(const Deck &d, const std::vector<bool> &on_shell, const std::vector<Constraint> &spc, const Subcase &sc)
+{
+  std::map<int, const Rbe3 *> by;
+  const auto fail = [&](const Rbe3 &e, const std::string &what) {
+    Fail(d, e, "REFGRID " + std::to_string(e.refgrid) + " " + what +
+                 ": boltnet supports an RBE3 whose REFGRID is connected to nothing else and only carries loads (FORCE, MOMENT), which it moves to the independent grids (docs/nastran.md, \"RBE3\")");
+  };
+  const auto check = [&](int g, const std::string &what) {
+    const auto it = g >= 0 ? by.find(g) : by.end();
+    if (it != by.end()) fail(*it->second, what);
+  };
+  for (const Rbe3 &e : d.rbe3s) {
+    CheckRbe3(d, e);
+    const int g = d.GridIndex(e.refgrid);
+    const auto [it, fresh] = by.emplace(g, &e);
+    if (!fresh) fail(e, "is also REFGRID of RBE3 " + std::to_string(it->second->id) + " at " + d.Where(it->second->src));
+  }
+  for (const Shell &s : d.shells)
+    for (int i = 0; i < s.Nodes(); ++i)
+      if (on_shell[s.node[i]]) check(s.node[i], std::string("is a grid of ") + (s.kind == ShellKind::Quad4 ? "CQUAD4 " : "CTRIA3 ") + std::to_string(s.id) + " at " + d.Where(s.src));
+  for (const Rbe3 &e : d.rbe3s)
+    for (const Rbe3::Group &grp : e.groups)
+      for (int gid : grp.grids) check(d.GridIndex(gid), "is an independent grid of RBE3 " + std::to_string(e.id) + " at " + d.Where(e.src));
+  for (const Bush &b : d.bushes)
+    for (int g : {b.na, b.nb}) check(g, "is a grid of CBUSH " + std::to_string(b.id) + " at " + d.Where(b.src));
+  for (const Rbe2 &r : d.rbe2s) {
+    check(d.GridIndex(r.gn), "is GN of RBE2 " + std::to_string(r.id) + " at " + d.Where(r.src));
+    for (int gid : r.gm) check(d.GridIndex(gid), "is a GM grid of RBE2 " + std::to_string(r.id) + " at " + d.Where(r.src));
+  }
+  for (const Constraint &c : spc) {
+    const auto it = by.find(c.node);
+    if (it != by.end() && (c.dofs & it->second->refc))
+      fail(*it->second, "has components " + DofString(c.dofs & it->second->refc) + " of REFC constrained in subcase " + std::to_string(sc.id) + " (SPC " + std::to_string(sc.spc) +
+                          " or GRID PS; Nastran refuses a constraint on a dependent component unless UM makes it independent)");
+  }
+  return by;
+}
+
+void MoveRbe3Loads(const Deck &d, const std::map<int, const Rbe3 *> &by_refgrid, int subcase, std::vector<NodalLoad> &nodal, std::vector<std::string> &notes)
+{
+  if (by_refgrid.empty()) return;
+  std::map<int, NodalLoad> by;
+  const auto add = [&](const NodalLoad &l) {
+    NodalLoad &t = by[l.node];
+    t.node = l.node;
+    for (int j = 0; j < 3; ++j) t.force[j] += l.force[j], t.moment[j] += l.moment[j];
+  };
+  for (const NodalLoad &l : nodal) {
+    const auto it = by_refgrid.find(l.node);
+    if (it == by_refgrid.end()) {
+      add(l);
+      continue;
+    }
+    const Rbe3                  &e = *it->second;
+    const std::vector<NodalLoad> shares = DistributeRbe3(d, e, l.force, l.moment, subcase);
+    for (const NodalLoad &f : shares) add(f);
+    std::ostringstream note;
+    note << "subcase " << subcase << ": RBE3 " << e.id << ": the load on REFGRID " << e.refgrid << " (force [" << l.force[0] << ", " << l.force[1] << ", " << l.force[2] << "], moment [" << l.moment[0] << ", " << l.moment[1]
+         << ", " << l.moment[2] << "]) moved to its " << shares.size() << " independent grid(s)";
+    notes.push_back(note.str());
+  }
+  nodal.clear();
+  for (const auto &[node, l] : by) nodal.push_back(l);
+}
+
 } // namespace boltnet::nastran

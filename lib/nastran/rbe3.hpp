@@ -15,6 +15,8 @@
 #include "nastran/deck.hpp"
 #include "nastran/expand.hpp"
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace boltnet::nastran {
@@ -31,5 +33,15 @@ void CheckRbe3(const Deck &deck, const Rbe3 &rbe3);
 // (in REFGRID's displacement system) is refused: Nastran leaves it on REFGRID, which boltnet does
 // not model. `subcase` only names the subcase in that message.
 std::vector<NodalLoad> DistributeRbe3(const Deck &deck, const Rbe3 &rbe3, const Vec3 &force, const Vec3 &moment, int subcase);
+
+// Every RBE3 of the deck checked (CheckRbe3) and keyed by its REFGRID's grid index, once its REFGRID
+// is known to be connected to nothing else: no shell (on_shell, per grid index), no CBUSH, no RBE2,
+// no other RBE3 (as REFGRID or independent grid), and in `subcase` no SPC or GRID PS on a REFC
+// component (Nastran refuses a constraint on a dependent component). Throws naming both cards.
+std::map<int, const Rbe3 *> Rbe3ByRefgrid(const Deck &deck, const std::vector<bool> &on_shell, const std::vector<Constraint> &spc, const Subcase &subcase);
+
+// Replaces the loads on REFGRIDs in `nodal` (sorted by grid index, as ExpandLoad gives them) by
+// their RBE3's forces at the independent grids, summed per grid; notes each load moved.
+void MoveRbe3Loads(const Deck &deck, const std::map<int, const Rbe3 *> &by_refgrid, int subcase, std::vector<NodalLoad> &nodal, std::vector<std::string> &notes);
 
 } // namespace boltnet::nastran
