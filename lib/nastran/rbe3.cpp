@@ -15,14 +15,16 @@ using Mat6 = std::array<Vec6, 6>;
 
 Vec3   Cross(const Vec3 &a, const Vec3 &b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
 double Dot(const Vec3 &a, const Vec3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3   Sub(const Vec3 &a, const Vec3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 
 [[noreturn]] void Fail(const Deck &d, const Rbe3 &e, const std::string &what)
 {
   throw Error(d.Where(e.src) + ": RBE3 " + std::to_string(e.id) + ": " + what, e.src.file >= 0 ? d.files[e.src.file] : "", e.src.line, "RBE3", 0);
 }
 
-// One independent component k: its grid (index), weight w_k, direction d_k (basic) and the row
-// s_k = (d_k, r_k x d_k) of the rigid-body map from REFGRID's motion to that component.
+// One independent component k: its grid (index), weight w_k, direction d_k (basic) and its row
+// s_k = (d_k, (r_k x d_k) / L) of the rigid-body map from the scaled motion (u, L theta) of the
+// point c below to that component (r_k = x_k - c).
 struct Component {
   int    node = -1;
   double w = 0;
@@ -30,11 +32,13 @@ struct Component {
   Vec6   s{};
 };
 
-// The least-squares system of an RBE3: A = sum w_k s_k s_k^T in the scaled unknowns (u, theta L),
-// L the weighted root-mean-square distance of the independent grids from REFGRID (1 if they all sit
-// on it), so that its eigenvalues compare forces with forces; A = V diag(lambda) V^T.
+// The least-squares system of an RBE3, written about the components' weighted centroid c (where
+// translations and rotations decouple for Ci = 123) in the unknowns (u, L theta), L the weighted
+// root-mean-square distance of the components from c (1 if they all sit on it), so that A's
+// eigenvalues compare forces with forces: A = sum w_k s_k s_k^T = V diag(lambda) V^T.
 struct System {
   std::vector<Component> comps;
+  Vec3                   c{};
   double                 length = 1;
   Vec6                   lambda{};
   Mat6                   v{}; // v[i][j]: component i of eigenvector j
@@ -79,42 +83,47 @@ void Eigen(Mat6 a, Vec6 &lambda, Mat6 &v)
 
 System Build(const Deck &d, const Rbe3 &e)
 {
-  System     sys;
-  const Vec3 xr = d.grids[d.GridIndex(e.refgrid)].x;
-  double     wsum = 0, wr2 = 0;
+  System sys;
+  double wsum = 0;
   for (const Rbe3::Group &g : e.groups)
-    for (int gid : g.grids) {
-      const Grid &grid = d.grids[d.GridIndex(gid)];
-      const Vec3  r{grid.x[0] - xr[0], grid.x[1] - xr[1], grid.x[2] - xr[2]};
+    for (int gid : g.grids)
       for (int c = 0; c < 3; ++c) {
         if (!(g.c >> c & 1u)) continue;
         Component k;
-        k.node = d.GridIndex(gid), k.w = g.weight, k.d = grid.cd_axes[c];
-        const Vec3 m = Cross(r, k.d);
-        k.s = {k.d[0], k.d[1], k.d[2], m[0], m[1], m[2]};
+        k.node = d.GridIndex(gid), k.w = g.weight, k.d = d.grids[k.node].cd_axes[c];
         sys.comps.push_back(k);
-        wsum += k.w, wr2 += k.w * Dot(r, r);
+        wsum += k.w;
+        for (int j = 0; j < 3; ++j) sys.c[j] += k.w * d.grids[k.node].x[j];
       }
-    }
-  if (wsum > 0 && wr2 > 0) sys.length = std::sqrt(wr2 / wsum);
-  Mat6 a{};
+  if (!(wsum > 0)) return sys;
+  for (double &cj : sys.c) cj /= wsum;
+  double wr2 = 0;
   for (const Component &k : sys.comps) {
-    Vec6 s = k.s;
-    for (int i = 3; i < 6; ++i) s[i] *= sys.length;
+    const Vec3 r = Sub(d.grids[k.node].x, sys.c);
+    wr2 += k.w * Dot(r, r);
+  }
+  if (wr2 > 0) sys.length = std::sqrt(wr2 / wsum);
+  Mat6 a{};
+  for (Component &k : sys.comps) {
+    const Vec3 m = Cross(Sub(d.grids[k.node].x, sys.c), k.d);
+    k.s = {k.d[0], k.d[1], k.d[2], m[0] / sys.length, m[1] / sys.length, m[2] / sys.length};
     for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) a[i][j] += k.w * s[i] * s[j];
+      for (int j = 0; j < 6; ++j) a[i][j] += k.w * k.s[i] * k.s[j];
   }
   Eigen(a, sys.lambda, sys.v);
   sys.tol = 1e-10 * *std::max_element(sys.lambda.begin(), sys.lambda.end());
   return sys;
 }
 
-// The unit direction (translation or rotation) of REFGRID's component c (0..5) in the basic system.
-Vec6 RefDirection(const Deck &d, const Rbe3 &e, int c)
+// A load (F, M) on REFGRID as the scaled load (F, (M + (x_ref - c) x F) / L) about c.
+Vec6 AboutCentroid(const Deck &d, const Rbe3 &e, const System &sys, const Vec3 &f, const Vec3 &m)
 {
-  const Vec3 &a = d.grids[d.GridIndex(e.refgrid)].cd_axes[c % 3];
-  return c < 3 ? Vec6{a[0], a[1], a[2], 0, 0, 0} : Vec6{0, 0, 0, a[0], a[1], a[2]};
+  const Vec3 arm = Cross(Sub(d.grids[d.GridIndex(e.refgrid)].x, sys.c), f);
+  return {f[0], f[1], f[2], (m[0] + arm[0]) / sys.length, (m[1] + arm[1]) / sys.length, (m[2] + arm[2]) / sys.length};
 }
+
+// The unit direction (translation or rotation) of REFGRID's component c (0..5) in the basic system.
+Vec3 RefAxis(const Deck &d, const Rbe3 &e, int c) { return d.grids[d.GridIndex(e.refgrid)].cd_axes[c % 3]; }
 
 } // namespace
 
@@ -132,15 +141,20 @@ void CheckRbe3(const Deck &d, const Rbe3 &e)
       if (gid == e.refgrid) Fail(d, e, "REFGRID " + std::to_string(e.refgrid) + " is also one of its independent grids");
   const System sys = Build(d, e);
   if (!(sys.tol > 0)) Fail(d, e, "its independent components have no weight");
+  // Each REFC component, as a unit load on REFGRID, must lie in the range of A (orthogonal to its
+  // null space); then so does every load on REFC, and its distribution is unique.
   std::string missing;
   for (int c = 0; c < 6; ++c) {
     if (!(e.refc >> c & 1u)) continue;
-    const Vec6 dir = RefDirection(d, e, c);
+    const Vec3 a = RefAxis(d, e, c), zero{};
+    Vec6       dir = c < 3 ? AboutCentroid(d, e, sys, a, zero) : AboutCentroid(d, e, sys, zero, a);
+    double     norm = 0;
+    for (double x : dir) norm += x * x;
     for (int j = 0; j < 6; ++j) {
       if (sys.lambda[j] > sys.tol) continue;
       double p = 0;
       for (int i = 0; i < 6; ++i) p += sys.v[i][j] * dir[i];
-      if (std::fabs(p) > 1e-6) {
+      if (std::fabs(p) > 1e-6 * std::sqrt(norm)) {
         missing += std::to_string(c + 1);
         break;
       }
@@ -154,14 +168,11 @@ void CheckRbe3(const Deck &d, const Rbe3 &e)
 std::vector<NodalLoad> DistributeRbe3(const Deck &d, const Rbe3 &e, const Vec3 &force, const Vec3 &moment, int subcase)
 {
   const System sys = Build(d, e);
-  const Vec6   p{force[0], force[1], force[2], moment[0], moment[1], moment[2]};
   // Components outside REFC (in REFGRID's displacement system) would stay on REFGRID.
   const double scale = std::sqrt(Dot(force, force)) + std::sqrt(Dot(moment, moment)) / sys.length;
   for (int c = 0; c < 6; ++c) {
     if (e.refc >> c & 1u) continue;
-    const Vec6 dir = RefDirection(d, e, c);
-    double     pc = 0;
-    for (int i = 0; i < 6; ++i) pc += dir[i] * p[i];
+    const double pc = Dot(RefAxis(d, e, c), c < 3 ? force : moment);
     if (std::fabs(pc) > 1e-12 * scale) {
       std::ostringstream m;
       m << "subcase " << subcase << ": REFGRID " << e.refgrid << " carries load component " << c + 1 << " (" << pc << ") which REFC = " << DofString(e.refc)
@@ -169,17 +180,15 @@ std::vector<NodalLoad> DistributeRbe3(const Deck &d, const Rbe3 &e, const Vec3 &
       Fail(d, e, m.str());
     }
   }
-  // v = A^-1 P on the range of A (CheckRbe3 made sure REFC, hence P, lies in it), scaled unknowns.
-  Vec6 ps = p;
-  for (int i = 3; i < 6; ++i) ps[i] *= sys.length;
-  Vec6 v{};
+  // v = A^-1 P on the range of A (CheckRbe3 made sure REFC, hence P, lies in it); f_k = w_k s_k . v.
+  const Vec6 p = AboutCentroid(d, e, sys, force, moment);
+  Vec6       v{};
   for (int j = 0; j < 6; ++j) {
     if (sys.lambda[j] <= sys.tol) continue;
     double c = 0;
-    for (int i = 0; i < 6; ++i) c += sys.v[i][j] * ps[i];
+    for (int i = 0; i < 6; ++i) c += sys.v[i][j] * p[i];
     for (int i = 0; i < 6; ++i) v[i] += c / sys.lambda[j] * sys.v[i][j];
   }
-  for (int i = 3; i < 6; ++i) v[i] *= sys.length;
   std::map<int, NodalLoad> by;
   for (const Component &k : sys.comps) {
     double f = 0;
