@@ -125,7 +125,7 @@ set_tests_properties(make_rbe3_decks PROPERTIES FIXTURES_SETUP nastran_rbe3_deck
 # REFGRID load into FORCE cards at the independent grids (and checks that they keep F and M).
 add_test(NAME make_rbe3_equivalent COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/rbe3_equivalent.py ${_r3}/rbe3-strip.bdf ${_r3}/rbe3-strip-forces.bdf)
 set_tests_properties(make_rbe3_equivalent PROPERTIES FIXTURES_REQUIRED nastran_rbe3_decks FIXTURES_SETUP nastran_rbe3_forces)
-foreach(ranks 1 2)
+foreach(ranks 1 2 3)
   boltnet_deck_run(nastran_rbe3 ${ranks} ${_r3}/rbe3-strip.bdf -load_max 1 -load_steps 1)
   set_tests_properties(run_nastran_rbe3_np${ranks} PROPERTIES FIXTURES_REQUIRED nastran_rbe3_decks)
   boltnet_deck_run(nastran_rbe3_forces ${ranks} ${_r3}/rbe3-strip-forces.bdf -load_max 1 -load_steps 1)
@@ -163,9 +163,11 @@ endforeach()
 # Results do not depend on the number of ranks (rtol 1e-9 as the other decks'; subcase 3 differs by
 # 1.1e-10, the solves stopping at 100 eps ||J|| ||x||).
 foreach(sub 1 2 3)
-  add_test(NAME nastran_rbe3_${sub}_ranks_1_vs_2
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_nodal_fields.py ${BOLTNET_OUT}/nastran_rbe3_np1/subcase-${sub} ${BOLTNET_OUT}/nastran_rbe3_np2/subcase-${sub} 1e-9)
-  set_tests_properties(nastran_rbe3_${sub}_ranks_1_vs_2 PROPERTIES FIXTURES_REQUIRED "nastran_rbe3_np1;nastran_rbe3_np2")
+  foreach(ranks 2 3)
+    add_test(NAME nastran_rbe3_${sub}_ranks_1_vs_${ranks}
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_nodal_fields.py ${BOLTNET_OUT}/nastran_rbe3_np1/subcase-${sub} ${BOLTNET_OUT}/nastran_rbe3_np${ranks}/subcase-${sub} 1e-9)
+    set_tests_properties(nastran_rbe3_${sub}_ranks_1_vs_${ranks} PROPERTIES FIXTURES_REQUIRED "nastran_rbe3_np1;nastran_rbe3_np${ranks}")
+  endforeach()
 endforeach()
 # Bad RBE3 input: a message naming the deck, the line and the card, non-zero exit, on 2 ranks.
 foreach(case_match
