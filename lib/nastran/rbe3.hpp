@@ -8,7 +8,7 @@
 // stiffness. By virtual work a load P = (F, M) on REFGRID acts on the independent components as
 // f_k = w_k s_k . A^-1 P, which keeps the resultant and its moment: sum f_k s_k = P.
 //
-// boltnet uses an RBE3 this way only: REFGRID must be connected to nothing but the RBE3 (model.cpp
+// boltnet uses an RBE3 this way only: REFGRID must be connected to nothing but the RBE3 (Rbe3ByRefgrid
 // checks that) and the loads on it are moved to the independent grids here.
 #pragma once
 
