@@ -1,5 +1,6 @@
 // A deck's subcase as boltnet's model (model.hpp; docs/nastran.md, "From a deck to a model").
 #include "nastran/model.hpp"
+#include "nastran/rbe3.hpp"
 #include "nastran/section.hpp"
 
 #include <algorithm>
@@ -132,8 +133,6 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
   const Subcase &sc = FindSubcase(d, subcase_id);
   DeckModel      m;
   m.subcase = sc.id;
-  // Cards whose meaning boltnet's model cannot hold: refused, never dropped.
-  if (!d.rbe3s.empty()) Fail(d, d.rbe3s[0].src, "RBE3", "RBE3 " + std::to_string(d.rbe3s[0].id) + ": the deck has " + std::to_string(d.rbe3s.size()) + " RBE3 card(s); interpolation elements are not turned into a boltnet model (docs/nastran.md, \"From a deck to a model\")");
 
   // Shell parts: the shells of each property. A grid of several properties' shells is a node of each
   // part; `owner` is the first part that has it, `copies` the others (tied below).
@@ -216,6 +215,10 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
   const std::vector<Constraint> spc = ExpandSpc(d, sc.spc);
   std::vector<bool>             constrained(d.grids.size(), false);
   for (const Constraint &c : spc) constrained[c.node] = true;
+  // RBE3: only as a load distribution from a REFGRID that nothing else connects (rbe3.hpp).
+  std::vector<bool> on_shell(d.grids.size());
+  for (size_t g = 0; g < d.grids.size(); ++g) on_shell[g] = owner[g] >= 0;
+  const std::map<int, const Rbe3 *> refgrid = Rbe3ByRefgrid(d, on_shell, spc, sc);
   const auto rigid = [&](int g) {
     if (owner[g] >= 0) return;
     ModelPart p;
@@ -237,6 +240,12 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
         Fail(d, b.src, "CBUSH", "CBUSH " + std::to_string(b.id) + ": " + field + " = grid " + std::to_string(d.grids[g].id) + " is on no shell element (CQUAD4/CTRIA3), is no RBE2's GN and has no SPC in subcase " + std::to_string(sc.id) + ": a boltnet joint attaches to shell parts or to rigid parts (docs/nastran.md)");
     }
   }
+
+  for (const Rbe3 &e : d.rbe3s)
+    for (const Rbe3::Group &grp : e.groups)
+      for (int gid : grp.grids)
+        if (owner[d.GridIndex(gid)] < 0)
+          Fail(d, e.src, "RBE3", "RBE3 " + std::to_string(e.id) + ": independent grid " + std::to_string(gid) + " is on no shell element and no rigid part: boltnet moves the RBE3's loads to parts");
 
   const auto local_node = [&](int part, int g) {
     const auto &gs = m.parts[part].grids;
@@ -403,6 +412,7 @@ DeckModel ModelOf(const Deck &d, int subcase_id, const ModelOptions &options)
   // the grid's first part.
   StaticLoad load = ExpandLoad(d, sc.load);
   PressuresToNodal(d, load.pressures, load.nodal);
+  MoveRbe3Loads(d, refgrid, sc.id, load.nodal, m.notes);
   for (const NodalLoad &l : load.nodal) {
     const Grid &g = d.grids[l.node];
     bool any = false;

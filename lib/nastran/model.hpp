@@ -1,7 +1,8 @@
 // A deck and one of its subcases turned into what boltnet's model describes (docs/nastran.md,
 // "From a deck to a model"): one shell part per shell property, joints from CBUSH and CFAST,
-// fixed dofs from SPC/SPC1/GRID PS and nodal loads from FORCE, MOMENT and PLOAD4. Pure C++: no
-// PETSc; throws nastran::Error naming the card (or the subcase) for what boltnet cannot represent.
+// fixed dofs from SPC/SPC1/GRID PS and nodal loads from FORCE, MOMENT and PLOAD4 (loads on an RBE3's
+// REFGRID moved to its independent grids). Pure C++: no PETSc; throws nastran::Error naming the
+// card (or the subcase) for what boltnet cannot represent.
 // lib/io/nastran.cpp puts the result into an assembly.
 #pragma once
 
@@ -87,8 +88,10 @@ struct ModelOptions {
   bool   bush_offsets = true;
 };
 
-// The model of subcase `subcase`. Throws nastran::Error for cards boltnet does not model (RBE3, an
-// RBE2 with CM other than 123456 or GN on a shell, grounded CBUSH), a fastener grid on no shell.
+// The model of subcase `subcase`. An RBE3 whose REFGRID nothing else connects moves the loads on
+// REFGRID to its independent grids (rbe3.hpp). Throws nastran::Error for what boltnet does not model
+// (an RBE3 whose REFGRID is connected to anything else, an RBE2 with CM other than 123456 or GN on a
+// shell, grounded CBUSH), a fastener grid on no shell.
 DeckModel ModelOf(const Deck &deck, int subcase, const ModelOptions &options = {});
 
 // PLOAD4 pressures as consistent nodal forces (2 x 2 Gauss points on the bilinear quadrilateral,

@@ -12,6 +12,7 @@ set(BOLTNET_NASTRAN_SOURCES
   ${CMAKE_CURRENT_LIST_DIR}/expand.cpp
   ${CMAKE_CURRENT_LIST_DIR}/section.cpp
   ${CMAKE_CURRENT_LIST_DIR}/model.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/rbe3.cpp
   ${CMAKE_CURRENT_LIST_DIR}/report.cpp
   CACHE INTERNAL "Pure C++ sources of the Nastran reader")
 target_sources(boltnet PRIVATE ${BOLTNET_NASTRAN_SOURCES} ${CMAKE_CURRENT_LIST_DIR}/petsc.cpp)
