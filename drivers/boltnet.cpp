@@ -89,14 +89,14 @@ struct CaseLine {
 };
 
 // Describes the model into a and makes its cases; for a scene with load cases, those of the set-up
-// `group` (by order of first appearance of their set-up key) and the number of groups.
-PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOptions &o, const LoadPath &base, const std::string &dir, size_t group, BoltnetAssembly a, std::vector<LoadCase> *cases, size_t *ngroups)
+// `group` (by order of first appearance of their set-up key) and the number of groups (a deck's
+// groups are its caller's: *ngroups is left as it is).
+PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOptions &o, const LoadPath &base, size_t group, BoltnetAssembly a, std::vector<LoadCase> *cases, size_t *ngroups)
 {
   MPI_Comm comm = PETSC_COMM_WORLD;
   PetscFunctionBeginUser;
   cases->clear();
-  *ngroups = 1;
-  if (src.deck) {
+  if (src.deck) { // a deck's groups of subcases are known before (SceneNastranSetUps)
     std::vector<std::vector<BCDesc>> conditions;
     PetscCall(SceneDescribeNastran(comm, &scene, *src.deck, src.subcases, src.options, src.fasteners, a, &conditions));
     for (size_t k = 0; k < src.subcases.size(); ++k) {
@@ -110,6 +110,7 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
     }
   } else {
     PetscCall(SceneDescribeAssembly(comm, &scene, a));
+    *ngroups = 1;
     if (!o.hasCases) {
       LoadCase c;
       c.bcs  = a->model.bcs;
@@ -133,8 +134,7 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
   // The set-up sees every condition of its cases (its checks: footprints, forces on supports), and
   // only those: a scene's other loads may hold other dof.
   if (!(*cases)[0].name.empty()) a->model.bcs = SetUpConditions(*cases);
-  (void)dir;
-  PetscFunctionReturn(0);
+    PetscFunctionReturn(0);
 }
 
 // Solves one case on the assembly that is set up, and writes its results under dir.
@@ -228,7 +228,7 @@ PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o,
   PetscCall(BoltnetAssemblyCreate(comm, &a));
   a->opt.progress = PETSC_TRUE; // a run of the driver reports each converged step unless -load_progress false
   PetscCall(LoadPathFromOptions(comm, nullptr, &base));
-  PetscCall(DescribeCases(src, scene, o, base, dir, group, a, &cases, ngroups));
+  PetscCall(DescribeCases(src, scene, o, base, group, a, &cases, ngroups));
   PetscCall(BoltnetAssemblySetFromOptions(a));
   if (!o.helpOnly && (o.every > 0 || !o.restart.empty())) PetscCall(CheckpointIdentify(a, scene.name, &ident)); // before the set-up takes the meshes
   PetscCall(BoltnetAssemblySetUp(a));
@@ -317,8 +317,11 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
       o.cases.push_back(names[i]);
       PetscCall(PetscFree(names[i]));
     }
-    o.hasCases = given;
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-load_cases", &o.hasCases)); // also with no value: an empty list
     PetscCall(LoadCaseNames(comm, o.hasCases, o.cases));
+    std::vector<std::string> defined;
+    PetscCall(DefinedLoadCases(&defined));
+    PetscCheck(o.hasCases || defined.empty(), comm, PETSC_ERR_USER_INPUT, "The options define load case '%s' (-load_case_%s_loads) but -load_cases lists no case: give -load_cases (load: cases: in the scene) to run the cases, or leave their options out", defined.empty() ? "" : defined[0].c_str(), defined.empty() ? "" : defined[0].c_str());
   }
   PetscCall(SceneCheckOptionValues(comm));
   if (!hasScene && !hasDeck && o.helpOnly) { // list the options that do not depend on a scene
@@ -368,11 +371,11 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     if (!coupling) PetscCall(PetscOptionsSetValue(nullptr, "-coupling_type", "node"));
     const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
     // One set-up per SPC set: the subcases that hold the same dof share it (docs/nastran.md).
-    for (const std::vector<PetscInt> &group : groups) {
-      Source src{&deck, group, {}, fastpath};
+    for (size_t g = 0; g < groups.size(); ++g) {
+      Source src{&deck, groups[g], {}, fastpath};
       src.options.tie_penalty = tie_penalty;
-      size_t ngroups;
-      PetscCall(RunSetUp(src, scene, o, dir, 0, &ngroups, exitcode, log, &lines));
+      size_t ngroups = groups.size();
+      PetscCall(RunSetUp(src, scene, o, dir, g, &ngroups, exitcode, log, &lines));
       ++setups;
       if (o.helpOnly || (*exitcode != 0 && *exitcode != 3)) break;
     }

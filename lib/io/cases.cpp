@@ -31,6 +31,23 @@ PetscErrorCode LoadCaseNames(MPI_Comm comm, PetscBool given, const std::vector<s
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode DefinedLoadCases(std::vector<std::string> *names)
+{
+  char *text;
+  PetscFunctionBeginUser;
+  names->clear();
+  PetscCall(PetscOptionsGetAll(nullptr, &text));
+  const std::string opts = text;
+  PetscCall(PetscFree(text));
+  const std::string head = "load_case_", tail = "_loads";
+  for (const auto &[opt, value] : OptionsSplit(opts))
+    if (opt.size() > head.size() + tail.size() && opt.compare(0, head.size(), head) == 0 && opt.compare(opt.size() - tail.size(), tail.size(), tail) == 0) {
+      const std::string name = opt.substr(head.size(), opt.size() - head.size() - tail.size());
+      if (std::find(names->begin(), names->end(), name) == names->end()) names->push_back(name);
+    }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vector<std::string> &names, const std::vector<BCDesc> &rows, const LoadPath &base, std::vector<LoadCase> *cases)
 {
   PetscFunctionBeginUser;
@@ -45,16 +62,10 @@ PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vect
   // that their options are not unknown and their mistakes are found, but not run.
   std::vector<std::string> all = names;
   {
-    char *text;
-    PetscCall(PetscOptionsGetAll(nullptr, &text));
-    const std::string opts = text;
-    PetscCall(PetscFree(text));
-    const std::string head = "load_case_", tail = "_loads";
-    for (const auto &[opt, value] : OptionsSplit(opts))
-      if (opt.size() > head.size() + tail.size() && opt.compare(0, head.size(), head) == 0 && opt.compare(opt.size() - tail.size(), tail.size(), tail) == 0) {
-        const std::string name = opt.substr(head.size(), opt.size() - head.size() - tail.size());
-        if (std::find(all.begin(), all.end(), name) == all.end()) all.push_back(name);
-      }
+    std::vector<std::string> defined_cases;
+    PetscCall(DefinedLoadCases(&defined_cases));
+    for (const std::string &name : defined_cases)
+      if (std::find(all.begin(), all.end(), name) == all.end()) all.push_back(name);
   }
   cases->clear();
   for (const std::string &name : all) {

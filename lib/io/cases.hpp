@@ -38,6 +38,9 @@ PetscErrorCode LoadCaseNames(MPI_Comm comm, PetscBool given, const std::vector<s
 // but `names` leaves out are read and checked the same way, not returned.
 PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vector<std::string> &names, const std::vector<BCDesc> &rows, const LoadPath &base, std::vector<LoadCase> *cases);
 
+// The cases that options define: the names <x> of the options -load_case_<x>_loads given.
+PetscErrorCode DefinedLoadCases(std::vector<std::string> *names);
+
 // The set-up key of a list of conditions (LoadCase::setup).
 std::string SetUpKey(const std::vector<BCDesc> &bcs);
 
