@@ -282,7 +282,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-options_left", &o.optionsLeft, nullptr));
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>; a load case: <output_dir>/<case>; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
+  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>; a load case: its folder <case> in it; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
   PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &o.fields));
   PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", o.every, &o.every, nullptr));
   PetscCall(PetscOptionsString("-checkpoint_file", "The checkpoint file (default <output_dir>/checkpoint.h5), replaced whole at every checkpoint", "", ckfile, ckfile, sizeof(ckfile), nullptr));
@@ -311,7 +311,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     PetscInt  n = kMaxLoadCases;
     PetscBool given = PETSC_FALSE;
     PetscOptionsBegin(comm, nullptr, "boltnet load cases", "boltnet");
-    PetscCall(PetscOptionsStringArray("-load_cases", "Load cases of the scene, each into the folder <output_dir>/<case> from the unloaded state on one set-up of the model (comma separated; each case names its loads with -load_case_<case>_loads: docs/scenes.md)", "", names, &n, &given));
+    PetscCall(PetscOptionsStringArray("-load_cases", "Load cases of the scene, each into its folder <case> of -output_dir, from the unloaded state on one set-up of the model (comma separated; each case names its loads with -load_case_<case>_loads: docs/scenes.md)", "", names, &n, &given));
     PetscOptionsEnd();
     for (PetscInt i = 0; i < (given ? n : 0); ++i) {
       o.cases.push_back(names[i]);

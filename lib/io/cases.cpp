@@ -79,6 +79,7 @@ PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vect
     c.name = name;
     PetscOptionsBegin(comm, nullptr, title.c_str(), "boltnet");
     PetscCall(PetscOptionsStringArray(opt.c_str(), "Loads of this case: names in the column 'load' of the boundary condition table (-scene_bcs); its rows with no load are in every case", "", loads, &nloads, &given));
+    PetscCall(LoadPathOfCase(PetscOptionsObject, comm, name, base, &c.path));
     PetscOptionsEnd();
     std::set<std::string> mine;
     std::string           bad;
@@ -92,7 +93,6 @@ PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vect
     PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Load case '%s' (%s): load '%s' is not in the column 'load' of %s (%s%s)", name.c_str(), opt.c_str(), bad.c_str(), scene.bcs_path.c_str(), list.empty() ? "which has no column 'load' or no name in it" : "its loads: ", list.c_str());
     for (size_t r = 0; r < rows.size(); ++r)
       if (scene.bc_loads[r].empty() || mine.count(scene.bc_loads[r])) c.bcs.push_back(rows[r]);
-    PetscCall(LoadPathOfCase(comm, name, base, &c.path));
     if (!run) continue;
     used.insert(mine.begin(), mine.end());
     c.setup = SetUpKey(c.bcs);

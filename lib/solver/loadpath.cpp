@@ -49,14 +49,11 @@ PetscErrorCode LoadPathFromOptions(MPI_Comm comm, const char prefix[], LoadPath 
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode LoadPathOfCase(MPI_Comm comm, const std::string &name, const LoadPath &base, LoadPath *path)
+PetscErrorCode LoadPathOfCase(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const std::string &name, const LoadPath &base, LoadPath *path)
 {
-  const std::string title = "Load case '" + name + "'";
   PetscFunctionBeginUser;
   *path = base;
-  PetscOptionsBegin(comm, nullptr, title.c_str(), "boltnet");
   PetscCall(ReadLoadPath(PetscOptionsObject, comm, "load_case_" + name + "_", true, path));
-  PetscOptionsEnd();
   PetscFunctionReturn(0);
 }
 

@@ -19,8 +19,9 @@ PetscErrorCode LoadPathFromOptions(MPI_Comm comm, const char prefix[], LoadPath 
 
 // The load path of load case `name` (docs/scenes.md, "Load cases"): -load_case_<name>_path,
 // _max, _table, _steps, each defaulting to the scene's (base); a table given alone makes the path a
-// table. Listed by -help in the section "Load case '<name>'".
-PetscErrorCode LoadPathOfCase(MPI_Comm comm, const std::string &name, const LoadPath &base, LoadPath *path);
+// table. Inside the caller's PetscOptionsBegin/End (the section "Load case '<name>'" of -help: PETSc
+// prints a section's title once, so a case's options are read in one section).
+PetscErrorCode LoadPathOfCase(PetscOptionItems *PetscOptionsObject, MPI_Comm comm, const std::string &name, const LoadPath &base, LoadPath *path);
 
 // The load factor of every step: segments split into steps_per_segment equal increments.
 std::vector<PetscReal> LoadPathTargets(PetscReal start, const std::vector<PetscReal> &breakpoints, PetscInt steps_per_segment);
