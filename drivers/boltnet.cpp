@@ -83,11 +83,6 @@ struct Source {
   std::string           fasteners;
 };
 
-// The line of one case in the run's closing summary.
-struct CaseLine {
-  std::string text;
-};
-
 // Describes the model into a and makes its cases; for a scene with load cases, those of the set-up
 // `group` (by order of first appearance of their set-up key) and the number of groups (a deck's
 // groups are its caller's: *ngroups is left as it is).
@@ -134,11 +129,11 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
   // The set-up sees every condition of its cases (its checks: footprints, forces on supports), and
   // only those: a scene's other loads may hold other dof.
   if (!(*cases)[0].name.empty()) a->model.bcs = SetUpConditions(*cases);
-    PetscFunctionReturn(0);
+  PetscFunctionReturn(0);
 }
 
 // Solves one case on the assembly that is set up, and writes its results under dir.
-PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, int *exitcode, ErrorLog *log, CaseLine *line)
+PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, int *exitcode, ErrorLog *log, std::string *line)
 {
   MPI_Comm comm = PETSC_COMM_WORLD;
   Output   out;
@@ -206,14 +201,14 @@ PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, con
   PetscCall(PetscTime(&t1));
   l.precision(3);
   l << "; " << std::fixed << (t1 - t0) << " s; " << dir << "/";
-  line->text = l.str();
+  *line = l.str();
   PetscFunctionReturn(0);
 }
 
 // Describes and sets up the model once, then solves each of its cases from the unloaded state
 // (docs/scenes.md, "Load cases"). group: which set-up of a scene's load cases; *ngroups: how many
 // there are.
-PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o, const std::string &dir, size_t group, size_t *ngroups, int *exitcode, ErrorLog *log, std::vector<CaseLine> *lines)
+PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o, const std::string &dir, size_t group, size_t *ngroups, int *exitcode, ErrorLog *log, std::vector<std::string> *lines)
 {
   MPI_Comm              comm = PETSC_COMM_WORLD;
   CheckpointIdentity    ident;
@@ -258,7 +253,7 @@ PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o,
     if (k > 0) PetscCall(AssemblyReset(a));
     if (k > 0 || !SameConditions(c.bcs, a->model.bcs)) PetscCall(AssemblySetLoads(a, c.bcs));
     if (!c.name.empty()) PetscCall(PetscPrintf(comm, "boltnet: load case %s (%zu of %zu on this set-up)\n", c.name.c_str(), k + 1, cases.size()));
-    CaseLine line;
+    std::string line; // for the run's closing summary
     PetscCall(SolveCase(a, c, scene, o, ident, c.name.empty() ? dir : dir + "/" + c.name, exitcode, log, &line));
     lines->push_back(line);
   }
@@ -336,7 +331,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   }
   PetscCheck(hasScene || hasDeck, comm, PETSC_ERR_USER_INPUT, "No scene: give -scene <file.yaml> (e.g. -scene share/scenes/fig3c.yaml) or -nastran_deck <file.bdf>; -help lists the options");
   PetscCheck(!(o.hasCases && (o.every > 0 || restart[0])), comm, PETSC_ERR_USER_INPUT, "-checkpoint_every and -restart are not available with -load_cases (each case is a run of its own from the unloaded state)");
-  std::vector<CaseLine> lines;
+  std::vector<std::string> lines;
   size_t                setups = 0;
   if (!hasDeck) {
     const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
@@ -383,7 +378,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   // The closing summary, one line per case, when there were several.
   if (lines.size() > 1) {
     PetscCall(PetscPrintf(comm, "boltnet: %zu load cases on %zu set-up(s):\n", lines.size(), setups));
-    for (const CaseLine &l : lines) PetscCall(PetscPrintf(comm, "%s\n", l.text.c_str()));
+    for (const std::string &l : lines) PetscCall(PetscPrintf(comm, "%s\n", l.c_str()));
   }
   if (o.optionsLeft && !o.helpOnly && *exitcode == 0) PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_FALSE, exitcode)); // an error, not a warning
   PetscFunctionReturn(0);

@@ -103,3 +103,16 @@ boltnet_expect(bad_case_checkpoint 1 ${_bad} ${_one} --match "-checkpoint_every 
 boltnet_expect(bad_case_with_deck 1 ${_bad} ${_one} --match "-load_cases is for a scene's tables: a Nastran deck's load cases are its subcases"
   -- $<TARGET_FILE:boltnet_driver> -nastran_deck ${_nm}/strip.bdf -output_dir ${BOLTNET_OUT}/bad -load_cases tension)
 set_tests_properties(bad_case_with_deck_np1 PROPERTIES FIXTURES_REQUIRED nastran_strips)
+
+# A case that fails does not stop the others, which start unloaded as usual: with at most three
+# Newton iterations per step and no cut-back, fig3c's cycle in one step per segment reaches 6 kN
+# (the joint slid and bears) and fails on the way back (summary.json "failed"); the case after
+# converges and gives what it gives alone; the run exits 3.
+foreach(ranks 1 2)
+  set(_strict -load_progress false -load_case_cycle_steps 1 -snes_max_it 3 -load_max_cuts 0)
+  boltnet_expect(fig3c_cases_failed ${ranks} --fail --match "case cycle: FAILED at load factor 6000 after 1 steps" --match "case after: converged, 45 steps"
+    -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/fig3c-cases.yaml -output_dir ${BOLTNET_OUT}/fig3c_cases_failed_np${ranks} ${_strict})
+  set_tests_properties(fig3c_cases_failed_np${ranks} PROPERTIES FIXTURES_SETUP fig3c_cases_failed_np${ranks})
+  boltnet_run(fig3c_case_after_strict ${ranks} ${BOLTNET_TEST_SCENES}/fig3c-cases.yaml -load_cases after ${_strict})
+  boltnet_compare_case(fig3c_cases_failed after ${ranks} fig3c_cases_failed fig3c_case_after_strict)
+endforeach()
