@@ -44,6 +44,7 @@ used is an error.\n\n";
 #include <petsctime.h>
 
 #include <algorithm>
+#include <functional>
 #include <new>
 #include <sstream>
 #include <string>
@@ -97,7 +98,6 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
     for (size_t k = 0; k < src.subcases.size(); ++k) {
       LoadCase c;
       c.name    = "subcase-" + std::to_string(src.subcases[k]);
-      c.subcase = src.subcases[k];
       c.bcs     = std::move(conditions[k]);
       c.path    = base;
       c.setup   = SetUpKey(c.bcs);
@@ -132,8 +132,9 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
   PetscFunctionReturn(0);
 }
 
-// Solves one case on the assembly that is set up, and writes its results under dir.
-PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, int *exitcode, ErrorLog *log, std::string *line)
+// Solves one case (the k-th of n on its set-up) on the assembly that is set up, and writes its
+// results under dir; describe, when given, says what was set up once the result files are open.
+PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, const std::function<PetscErrorCode()> &describe, size_t k, size_t n, int *exitcode, ErrorLog *log, std::string *line)
 {
   MPI_Comm comm = PETSC_COMM_WORLD;
   Output   out;
@@ -164,6 +165,8 @@ PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, con
     if (o.every > 0 && info.step % o.every == 0) PetscCall(CheckpointWrite(as, ident, out, ckpt)); // after the step's results are on disk
     PetscFunctionReturn(0);
   };
+  if (describe) PetscCall(describe());
+  if (!c.name.empty()) PetscCall(PetscPrintf(comm, "boltnet: load case %s (%zu of %zu on this set-up)\n", c.name.c_str(), k, n));
   if (!o.restart.empty()) PetscCall(PetscPrintf(comm, "boltnet: restart from %s at step %zu, load factor %g\n", o.restart.c_str(), a->steps.size(), (double)a->lambda));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
@@ -238,23 +241,28 @@ PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o,
       PetscFunctionReturn(0);
     }
   }
-  PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
-  if (a->opt.condense) PetscCall(PetscPrintf(comm, "; condensed onto %" PetscInt_FMT " interface dof", a->net.ndof_global));
-  PetscCall(PetscPrintf(comm, "\n"));
   PetscCall(PetscTime(&t1));
-  if (cases.size() > 1 || !cases[0].name.empty()) {
-    std::string names;
-    for (const LoadCase &c : cases) names += (names.empty() ? "" : ", ") + c.name;
-    PetscCall(PetscPrintf(comm, "boltnet: set-up %zu of %zu (%.3f s) for %zu load case(s): %s\n", group + 1, *ngroups, (double)(t1 - t0), cases.size(), names.c_str()));
-  }
+  // What was set up, said once its first case's result files are open (a run that cannot write them
+  // stops with one line).
+  auto describe = [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
+    if (a->opt.condense) PetscCall(PetscPrintf(comm, "; condensed onto %" PetscInt_FMT " interface dof", a->net.ndof_global));
+    PetscCall(PetscPrintf(comm, "\n"));
+    if (cases.size() > 1 || !cases[0].name.empty()) {
+      std::string names;
+      for (const LoadCase &c : cases) names += (names.empty() ? "" : ", ") + c.name;
+      PetscCall(PetscPrintf(comm, "boltnet: set-up %zu of %zu (%.3f s) for %zu load case(s): %s\n", group + 1, *ngroups, (double)(t1 - t0), cases.size(), names.c_str()));
+    }
+    PetscFunctionReturn(0);
+  };
   // Each case from the unloaded state, with its own loads on the one set-up.
   for (size_t k = 0; k < cases.size(); ++k) {
     const LoadCase &c = cases[k];
     if (k > 0) PetscCall(AssemblyReset(a));
     if (k > 0 || !SameConditions(c.bcs, a->model.bcs)) PetscCall(AssemblySetLoads(a, c.bcs));
-    if (!c.name.empty()) PetscCall(PetscPrintf(comm, "boltnet: load case %s (%zu of %zu on this set-up)\n", c.name.c_str(), k + 1, cases.size()));
     std::string line; // for the run's closing summary
-    PetscCall(SolveCase(a, c, scene, o, ident, c.name.empty() ? dir : dir + "/" + c.name, exitcode, log, &line));
+    PetscCall(SolveCase(a, c, scene, o, ident, c.name.empty() ? dir : dir + "/" + c.name, k == 0 ? describe : std::function<PetscErrorCode()>(), k + 1, cases.size(), exitcode, log, &line));
     lines->push_back(line);
   }
   PetscFunctionReturn(0);

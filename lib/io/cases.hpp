@@ -13,12 +13,11 @@ namespace boltnet {
 // The characters of a load or load case name: they make option names (-load_case_<name>_loads)
 // and folder names.
 constexpr const char *kLoadNameChars = "abcdefghijklmnopqrstuvwxyz0123456789_-";
-// At most this many cases in -load_cases.
+// At most this many names in -load_cases, and loads in a case's -load_case_<name>_loads.
 constexpr int kMaxLoadCases = 1000;
 
 struct LoadCase {
-  std::string         name;        // its folder under -output_dir; "" for a run of one case
-  PetscInt            subcase = 0; // a Nastran deck's subcase id (0: a scene's case)
+  std::string         name;        // its folder under -output_dir ("subcase-<id>" for a deck's); "" for a run of one case
   std::vector<BCDesc> bcs;         // its boundary conditions, per unit load factor
   LoadPath            path;
   // Cases with the same key share one set-up: the key lists the conditions that hold dof (fixed or
