@@ -73,20 +73,26 @@ PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, Pe
 
 PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, const std::vector<PetscInt> &subcases, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a, std::vector<std::vector<BCDesc>> *conditions)
 {
-  std::vector<nastran::DeckModel> models(subcases.size());
-  std::vector<FastenerRule>       rules;
-  std::set<std::string>           said;
+  nastran::DeckModel                       m;          // the first subcase's model
+  std::vector<std::vector<nastran::ModelBC>> bcs(subcases.size()); // each subcase's conditions
+  std::vector<FastenerRule>                rules;
+  std::set<std::string>                    said;
   PetscFunctionBeginUser;
   PetscCheck(!subcases.empty(), comm, PETSC_ERR_ARG_WRONG, "No subcase to describe");
   for (size_t k = 0; k < subcases.size(); ++k) {
-    PetscCall(Input(comm, "turning the Nastran deck into a model", [&] { models[k] = nastran::ModelOf(deck, (int)subcases[k], options); }));
-    for (const std::string &n : models[k].notes)
+    nastran::DeckModel mk;
+    PetscCall(Input(comm, "turning the Nastran deck into a model", [&] { mk = nastran::ModelOf(deck, (int)subcases[k], options); }));
+    for (const std::string &n : mk.notes)
       if (said.insert(n).second) PetscCall(PetscPrintf(comm, "boltnet: nastran: %s\n", n.c_str()));
     // The subcases of one set-up hold the same dof (the same SPC set), so they have the same parts
-    // (a constrained grid joined by a CBUSH is a rigid part): the model is the first one's.
-    PetscCheck(models[k].parts.size() == models[0].parts.size() && models[k].joints.size() == models[0].joints.size(), comm, PETSC_ERR_PLIB, "Subcases %" PetscInt_FMT " and %" PetscInt_FMT " make different models", subcases[0], subcases[k]);
+    // (a constrained grid joined by a CBUSH is a rigid part): the model is the first one's, and of
+    // the others only their conditions are kept.
+    bool same = mk.parts.size() == (k ? m.parts.size() : mk.parts.size()) && mk.joints.size() == (k ? m.joints.size() : mk.joints.size());
+    for (size_t i = 0; same && k > 0 && i < mk.parts.size(); ++i) same = mk.parts[i].pid == m.parts[i].pid;
+    PetscCheck(same, comm, PETSC_ERR_PLIB, "Subcases %" PetscInt_FMT " and %" PetscInt_FMT " make different models", subcases[0], subcases[k]);
+    bcs[k] = std::move(mk.bcs);
+    if (k == 0) m = std::move(mk);
   }
-  nastran::DeckModel &m = models[0];
   if (!fasteners.empty()) PetscCall(ReadFastenerTable(comm, fasteners, &rules));
   for (nastran::ModelPart &p : m.parts) {
     if (p.rigid) PetscCall(BoltnetAssemblyAddRigidPatch(a, p.pid, p.x.data()));
@@ -124,7 +130,7 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
   const BoltnetBCKind kinds[] = {BOLTNET_BC_FIXED, BOLTNET_BC_DISPLACEMENT, BOLTNET_BC_FORCE};
   conditions->assign(subcases.size(), {});
   for (size_t k = 0; k < subcases.size(); ++k)
-    for (const nastran::ModelBC &b : models[k].bcs) {
+    for (const nastran::ModelBC &b : bcs[k]) {
       const PetscInt pid = m.parts[b.part].pid;
       if (!b.set.empty()) {
         auto it = made.find({pid, b.set});
@@ -140,7 +146,7 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
   size_t nrigid = 0;
   for (const nastran::ModelPart &p : m.parts) nrigid += p.rigid;
   for (size_t k = 0; k < subcases.size(); ++k)
-    PetscCall(PetscPrintf(comm, "boltnet: nastran subcase %" PetscInt_FMT ": %zu shell parts (properties), %zu rigid parts (grids), %zu joints, %zu conditions\n", subcases[k], m.parts.size() - nrigid, nrigid, m.joints.size(), models[k].bcs.size()));
+    PetscCall(PetscPrintf(comm, "boltnet: nastran subcase %" PetscInt_FMT ": %zu shell parts (properties), %zu rigid parts (grids), %zu joints, %zu conditions\n", subcases[k], m.parts.size() - nrigid, nrigid, m.joints.size(), bcs[k].size()));
   PetscFunctionReturn(0);
 }
 
