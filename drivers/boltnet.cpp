@@ -20,7 +20,13 @@ iterations, joints sticking, sliding and bearing, elapsed time and an estimate o
 A long run can keep a checkpoint every N converged steps (-checkpoint_every N) and, killed, go on\n\
 from it with the same command and -restart <output_dir>/checkpoint.h5 (docs/scenes.md).\n\
 \n\
+Several load cases of one model run on one set-up of it (the mesh, the network and the condensed\n\
+patches built once), each from the unloaded state into its own folder <output_dir>/<case>:\n\
+  build/bin/boltnet -scene test/scenes/strip-cases.yaml -load_cases tension,bending\n\
+(-load_cases and -load_case_<case>_*: docs/scenes.md, \"Load cases\").\n\
+\n\
 A Nastran deck runs instead of a scene's tables (docs/nastran.md): every subcase into its own folder,\n\
+on one set-up for the subcases of one SPC set,\n\
   mpirun -n 2 build/bin/boltnet -nastran_deck model.bdf -output_dir /tmp/model\n\
 \n\
 Options on the command line override the scene file. With -options_left, an option that nothing\n\
@@ -32,36 +38,32 @@ used is an error.\n\n";
 #include "io/io.hpp"
 #include "io/limits.hpp"
 #include "nastran/petsc.hpp"
+#include "io/cases.hpp"
 #include "solver/loadpath.hpp"
 
+#include <petsctime.h>
+
+#include <algorithm>
+#include <functional>
 #include <new>
+#include <sstream>
 #include <string>
 
 using namespace boltnet;
 
 namespace {
 
-// The assembly and the open result files are released on every return from Run, an error's
-// included, so that a run stopped by bad input leaks nothing (scripts/sanitize checks it). Their
-// own errors then are not the one reported.
+// The assembly (and, in SolveCase, the open result files) are released on every return, an
+// error's included, so that a run stopped by bad input leaks nothing (scripts/sanitize checks it).
+// Their own errors then are not the one reported.
 struct Release {
   BoltnetAssembly a = nullptr;
-  Output          out;
   ~Release()
   {
     PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-    OutputDiscard(&out);
     BoltnetAssemblyDestroy(&a);
     PetscPopErrorHandler();
   }
-};
-
-// What one run solves: the scene's tables, or one subcase of a Nastran deck.
-struct Source {
-  const nastran::Deck  *deck = nullptr;
-  PetscInt              subcase = 0;
-  nastran::ModelOptions options;
-  std::string           fasteners;
 };
 
 struct DriverOptions {
@@ -69,28 +71,162 @@ struct DriverOptions {
   PetscBool     helpOnly = PETSC_FALSE, optionsLeft = PETSC_FALSE;
   FieldsOptions fields;
   PetscInt      every = 0;
+  PetscBool     hasCases = PETSC_FALSE;  // -load_cases given
+  std::vector<std::string> cases;        // its names
 };
 
-// Describes, sets up and solves one model, and writes its results under dir.
-PetscErrorCode RunOne(const Source &src, Scene &scene, const DriverOptions &o, const std::string &dir, int *exitcode, ErrorLog *log)
+// What a set-up solves: the scene's tables (cases: one made of every condition of the table, or
+// those of -load_cases), or a group of subcases of a Nastran deck that hold the same dof.
+struct Source {
+  const nastran::Deck  *deck = nullptr;
+  std::vector<PetscInt> subcases;
+  nastran::ModelOptions options;
+  std::string           fasteners;
+};
+
+// Describes the model into a and makes its cases; for a scene with load cases, those of the set-up
+// `group` (by order of first appearance of their set-up key) and the number of groups (a deck's
+// groups are its caller's: *ngroups is left as it is).
+PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOptions &o, const LoadPath &base, size_t group, BoltnetAssembly a, std::vector<LoadCase> *cases, size_t *ngroups)
 {
-  MPI_Comm           comm = PETSC_COMM_WORLD;
-  CheckpointIdentity ident;
-  LoadPath           path;
-  Release            held;
-  BoltnetAssembly   &a   = held.a;
-  Output            &out = held.out;
+  MPI_Comm comm = PETSC_COMM_WORLD;
   PetscFunctionBeginUser;
+  cases->clear();
+  if (src.deck) { // a deck's groups of subcases are known before (SceneNastranSetUps)
+    std::vector<std::vector<BCDesc>> conditions;
+    PetscCall(SceneDescribeNastran(comm, &scene, *src.deck, src.subcases, src.options, src.fasteners, a, &conditions));
+    for (size_t k = 0; k < src.subcases.size(); ++k) {
+      LoadCase c;
+      c.name    = "subcase-" + std::to_string(src.subcases[k]);
+      c.bcs     = std::move(conditions[k]);
+      c.path    = base;
+      c.setup   = SetUpKey(c.bcs);
+      cases->push_back(std::move(c));
+    }
+  } else {
+    PetscCall(SceneDescribeAssembly(comm, &scene, a));
+    *ngroups = 1;
+    if (!o.hasCases) {
+      LoadCase c;
+      c.bcs  = a->model.bcs;
+      c.path = base;
+      cases->push_back(std::move(c));
+    } else {
+      std::vector<LoadCase> all;
+      std::vector<std::string> keys;
+      PetscCall(SceneLoadCases(comm, scene, o.cases, a->model.bcs, base, &all));
+      for (const LoadCase &c : all)
+        if (std::find(keys.begin(), keys.end(), c.setup) == keys.end()) keys.push_back(c.setup);
+      *ngroups = keys.size();
+      for (LoadCase &c : all)
+        if (c.setup == keys[group]) cases->push_back(std::move(c));
+    }
+  }
+  for (LoadCase &c : *cases) {
+    const std::int64_t segments = std::max<std::int64_t>(1, (std::int64_t)c.path.breakpoints.size());
+    PetscCheck(segments * c.path.steps_per_segment <= limits::kMaxLoadSteps, comm, PETSC_ERR_USER_INPUT, "%s%s%s-load_steps %" PetscInt_FMT " over %lld segment(s) of the load path is more than the limit of %lld steps (docs/scenes.md, \"Limits\")", c.name.empty() ? "" : "load case ", c.name.c_str(), c.name.empty() ? "" : ": ", c.path.steps_per_segment, (long long)segments, (long long)limits::kMaxLoadSteps);
+  }
+  // The set-up sees every condition of its cases (its checks: footprints, forces on supports), and
+  // only those: a scene's other loads may hold other dof.
+  if (!(*cases)[0].name.empty()) a->model.bcs = SetUpConditions(*cases);
+  PetscFunctionReturn(0);
+}
+
+// Solves one case (the k-th of n on its set-up) on the assembly that is set up, and writes its
+// results under dir; describe, when given, says what was set up once the result files are open.
+PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, const std::function<PetscErrorCode()> &describe, size_t k, size_t n, int *exitcode, ErrorLog *log, std::string *line)
+{
+  MPI_Comm comm = PETSC_COMM_WORLD;
+  Output   out;
+  struct Discard { // the result files, on every return (an error's included)
+    Output *o;
+    ~Discard()
+    {
+      PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+      OutputDiscard(o);
+      PetscPopErrorHandler();
+    }
+  } discard{&out};
+  PetscLogDouble t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
+  // A restart loads and checks the checkpoint and the results it continues before it writes anything.
+  const std::string ckpt = !o.ckfile.empty() ? o.ckfile : dir + "/checkpoint.h5";
+  if (o.every > 0 && !o.ckfile.empty()) PetscCall(CheckpointCheckFile(comm, ckpt)); // the default's directory is -output_dir
+  if (!o.restart.empty()) {
+    PetscCall(CheckpointLoad(a, ident, o.restart.c_str(), &out));
+    PetscCall(OutputResume(comm, dir, scene.name, o.fields, a, &out));
+  } else PetscCall(OutputOpen(comm, dir, scene.name, o.fields, a, &out));
+  out.identified = "{" + scene.identified + "}";
+  out.load_case  = c.name;
+  a->on_step = [&](BoltnetAssembly as, const StepInfo &info) {
+    PetscFunctionBeginUser;
+    PetscCall(OutputStep(as, info, &out));
+    if (o.every > 0 && info.step % o.every == 0) PetscCall(CheckpointWrite(as, ident, out, ckpt)); // after the step's results are on disk
+    PetscFunctionReturn(0);
+  };
+  if (describe) PetscCall(describe());
+  if (!c.name.empty()) PetscCall(PetscPrintf(comm, "boltnet: load case %s (%zu of %zu on this set-up)\n", c.name.c_str(), k, n));
+  if (!o.restart.empty()) PetscCall(PetscPrintf(comm, "boltnet: restart from %s at step %zu, load factor %g\n", o.restart.c_str(), a->steps.size(), (double)a->lambda));
+
+  // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
+  // program exits 3. Any other error (a file that cannot be written, a library failure) goes up
+  // with its own message and leaves no summary.json: OutputOpen removed the last run's.
+  log->messages.clear();
+  PetscErrorCode ierr;
+  try {
+    ierr = BoltnetAssemblySolveLoadPath(a, (PetscInt)c.path.breakpoints.size(), c.path.breakpoints.data(), c.path.steps_per_segment);
+  } catch (const std::bad_alloc &) {
+    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory during the load path");
+  }
+  a->on_step = nullptr;
+  if (ierr && a->failure.empty()) {
+    const std::string why = ErrorText(*log);
+    SETERRQ(comm, ierr, "%s%s%sThe load path stopped at load factor %g: %s", c.name.empty() ? "" : "load case ", c.name.c_str(), c.name.empty() ? "" : ": ", (double)a->lambda, why.empty() ? "PETSc error" : why.c_str());
+  }
+  log->messages.clear();
+  std::ostringstream l;
+  l << "boltnet: " << (c.name.empty() ? std::string() : "case " + c.name + ": ");
+  if (ierr) {
+    PetscCall(PetscPrintf(comm, "boltnet: FAILED: %s\n", a->failure.c_str()));
+    PetscCall(OutputSummary(a, &out, "failed", a->failure));
+    *exitcode = 3;
+    l << "FAILED at load factor " << a->lambda << " after " << a->steps.size() << " steps";
+  } else {
+    PetscCall(OutputSummary(a, &out, "converged", ""));
+    PetscCall(PetscPrintf(comm, "boltnet: %s%s%s%zu steps converged (%" PetscInt_FMT " cut-backs), load factor %g; results in %s/\n", c.name.empty() ? "" : "case ", c.name.c_str(), c.name.empty() ? "" : ": ", a->steps.size(), a->total_cutbacks, (double)a->lambda, dir.c_str()));
+    if (out.most_joint >= 0)
+      PetscCall(PetscPrintf(comm, "boltnet: most loaded joint %" PetscInt_FMT ": in-plane force %g at step %" PetscInt_FMT " (load %g)\n", out.most_joint, (double)out.most_force, out.most_step, (double)out.most_load));
+    l << "converged, " << a->steps.size() << " steps (" << a->total_cutbacks << " cut-backs), load factor " << a->lambda;
+    if (out.most_joint >= 0) l << ", most loaded joint " << out.most_joint << " (in-plane force " << out.most_force << " at load " << out.most_load << ")";
+  }
+  PetscCall(OutputClose(comm, &out));
+  PetscCall(PetscTime(&t1));
+  l.precision(3);
+  l << "; " << std::fixed << (t1 - t0) << " s; " << dir << "/";
+  *line = l.str();
+  PetscFunctionReturn(0);
+}
+
+// Describes and sets up the model once, then solves each of its cases from the unloaded state
+// (docs/scenes.md, "Load cases"). group: which set-up of a scene's load cases; *ngroups: how many
+// there are.
+PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o, const std::string &dir, size_t group, size_t *ngroups, int *exitcode, ErrorLog *log, std::vector<std::string> *lines)
+{
+  MPI_Comm              comm = PETSC_COMM_WORLD;
+  CheckpointIdentity    ident;
+  LoadPath              base;
+  Release               held;
+  BoltnetAssembly      &a = held.a;
+  std::vector<LoadCase> cases;
+  PetscLogDouble        t0, t1;
+  PetscFunctionBeginUser;
+  PetscCall(PetscTime(&t0));
   // Everything is read and checked before anything is written.
   PetscCall(BoltnetAssemblyCreate(comm, &a));
   a->opt.progress = PETSC_TRUE; // a run of the driver reports each converged step unless -load_progress false
-  if (src.deck) PetscCall(SceneDescribeNastran(comm, &scene, *src.deck, src.subcase, src.options, src.fasteners, a));
-  else PetscCall(SceneDescribeAssembly(comm, &scene, a));
-  PetscCall(LoadPathFromOptions(comm, nullptr, &path));
-  {
-    const std::int64_t segments = std::max<std::int64_t>(1, (std::int64_t)path.breakpoints.size());
-    PetscCheck(segments * path.steps_per_segment <= limits::kMaxLoadSteps, comm, PETSC_ERR_USER_INPUT, "-load_steps %" PetscInt_FMT " over %lld segment(s) of the load path is more than the limit of %lld steps (docs/scenes.md, \"Limits\")", path.steps_per_segment, (long long)segments, (long long)limits::kMaxLoadSteps);
-  }
+  PetscCall(LoadPathFromOptions(comm, nullptr, &base));
+  PetscCall(DescribeCases(src, scene, o, base, group, a, &cases, ngroups));
   PetscCall(BoltnetAssemblySetFromOptions(a));
   if (!o.helpOnly && (o.every > 0 || !o.restart.empty())) PetscCall(CheckpointIdentify(a, scene.name, &ident)); // before the set-up takes the meshes
   PetscCall(BoltnetAssemblySetUp(a));
@@ -105,52 +241,30 @@ PetscErrorCode RunOne(const Source &src, Scene &scene, const DriverOptions &o, c
       PetscFunctionReturn(0);
     }
   }
-
-  // A restart loads and checks the checkpoint and the results it continues before it writes anything.
-  const std::string ckpt = !o.ckfile.empty() ? o.ckfile : dir + "/checkpoint.h5";
-  if (o.every > 0 && !o.ckfile.empty()) PetscCall(CheckpointCheckFile(comm, ckpt)); // the default's directory is -output_dir
-  if (!o.restart.empty()) {
-    PetscCall(CheckpointLoad(a, ident, o.restart.c_str(), &out));
-    PetscCall(OutputResume(comm, dir, scene.name, o.fields, a, &out));
-  } else PetscCall(OutputOpen(comm, dir, scene.name, o.fields, a, &out));
-  out.identified = "{" + scene.identified + "}";
-  a->on_step = [&](BoltnetAssembly as, const StepInfo &info) {
+  PetscCall(PetscTime(&t1));
+  // What was set up, said once its first case's result files are open (a run that cannot write them
+  // stops with one line).
+  auto describe = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
-    PetscCall(OutputStep(as, info, &out));
-    if (o.every > 0 && info.step % o.every == 0) PetscCall(CheckpointWrite(as, ident, out, ckpt)); // after the step's results are on disk
+    PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
+    if (a->opt.condense) PetscCall(PetscPrintf(comm, "; condensed onto %" PetscInt_FMT " interface dof", a->net.ndof_global));
+    PetscCall(PetscPrintf(comm, "\n"));
+    if (cases.size() > 1 || !cases[0].name.empty()) {
+      std::string names;
+      for (const LoadCase &c : cases) names += (names.empty() ? "" : ", ") + c.name;
+      PetscCall(PetscPrintf(comm, "boltnet: set-up %zu of %zu (%.3f s) for %zu load case(s): %s\n", group + 1, *ngroups, (double)(t1 - t0), cases.size(), names.c_str()));
+    }
     PetscFunctionReturn(0);
   };
-  PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
-  if (a->opt.condense) PetscCall(PetscPrintf(comm, "; condensed onto %" PetscInt_FMT " interface dof", a->net.ndof_global));
-  PetscCall(PetscPrintf(comm, "\n"));
-  if (!o.restart.empty()) PetscCall(PetscPrintf(comm, "boltnet: restart from %s at step %zu, load factor %g\n", o.restart.c_str(), a->steps.size(), (double)a->lambda));
-
-  // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
-  // program exits 3. Any other error (a file that cannot be written, a library failure) goes up
-  // with its own message and leaves no summary.json: OutputOpen removed the last run's.
-  log->messages.clear();
-  PetscErrorCode ierr;
-  try {
-    ierr = BoltnetAssemblySolveLoadPath(a, (PetscInt)path.breakpoints.size(), path.breakpoints.data(), path.steps_per_segment);
-  } catch (const std::bad_alloc &) {
-    SETERRQ(comm, PETSC_ERR_MEM, "Out of memory during the load path");
+  // Each case from the unloaded state, with its own loads on the one set-up.
+  for (size_t k = 0; k < cases.size(); ++k) {
+    const LoadCase &c = cases[k];
+    if (k > 0) PetscCall(AssemblyReset(a));
+    if (k > 0 || !SameConditions(c.bcs, a->model.bcs)) PetscCall(AssemblySetLoads(a, c.bcs));
+    std::string line; // for the run's closing summary
+    PetscCall(SolveCase(a, c, scene, o, ident, c.name.empty() ? dir : dir + "/" + c.name, k == 0 ? describe : std::function<PetscErrorCode()>(), k + 1, cases.size(), exitcode, log, &line));
+    lines->push_back(line);
   }
-  if (ierr && a->failure.empty()) {
-    const std::string why = ErrorText(*log);
-    SETERRQ(comm, ierr, "The load path stopped at load factor %g: %s", (double)a->lambda, why.empty() ? "PETSc error" : why.c_str());
-  }
-  log->messages.clear();
-  if (ierr) {
-    PetscCall(PetscPrintf(comm, "boltnet: FAILED: %s\n", a->failure.c_str()));
-    PetscCall(OutputSummary(a, &out, "failed", a->failure));
-    *exitcode = 3;
-  } else {
-    PetscCall(OutputSummary(a, &out, "converged", ""));
-    PetscCall(PetscPrintf(comm, "boltnet: %zu steps converged (%" PetscInt_FMT " cut-backs), load factor %g; results in %s/\n", a->steps.size(), a->total_cutbacks, (double)a->lambda, dir.c_str()));
-    if (out.most_joint >= 0)
-      PetscCall(PetscPrintf(comm, "boltnet: most loaded joint %" PetscInt_FMT ": in-plane force %g at step %" PetscInt_FMT " (load %g)\n", out.most_joint, (double)out.most_force, out.most_step, (double)out.most_load));
-  }
-  PetscCall(OutputClose(comm, &out));
   PetscFunctionReturn(0);
 }
 
@@ -172,7 +286,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-options_left", &o.optionsLeft, nullptr));
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
+  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>; a load case: its folder <case> in it; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
   PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &o.fields));
   PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", o.every, &o.every, nullptr));
   PetscCall(PetscOptionsString("-checkpoint_file", "The checkpoint file (default <output_dir>/checkpoint.h5), replaced whole at every checkpoint", "", ckfile, ckfile, sizeof(ckfile), nullptr));
@@ -196,30 +310,58 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsBool("-nastran_bush_offsets", "Place a CBUSH's spring at S of GA-GB, each grid carrying it by a rigid lever, as Nastran does (false: at the midpoint, each part loaded at its grid without lever)", "", bush_offsets, &bush_offsets, nullptr));
   PetscOptionsEnd();
   PetscCheck(tie_penalty > 0, comm, PETSC_ERR_USER_INPUT, "-nastran_tie_penalty %g must be > 0", (double)tie_penalty);
+  // Load cases (docs/scenes.md, "Load cases"): several loadings of the scene's model on one set-up.
+  {
+    char     *names[kMaxLoadCases];
+    PetscInt  n = kMaxLoadCases;
+    PetscBool given = PETSC_FALSE;
+    PetscOptionsBegin(comm, nullptr, "boltnet load cases", "boltnet");
+    PetscCall(PetscOptionsStringArray("-load_cases", "Load cases of the scene, each into its folder <case> of -output_dir, from the unloaded state on one set-up of the model (comma separated; each case names its loads with -load_case_<case>_loads: docs/scenes.md)", "", names, &n, &given));
+    PetscOptionsEnd();
+    for (PetscInt i = 0; i < (given ? n : 0); ++i) {
+      o.cases.push_back(names[i]);
+      PetscCall(PetscFree(names[i]));
+    }
+    PetscCall(PetscOptionsHasName(nullptr, nullptr, "-load_cases", &o.hasCases)); // also with no value: an empty list
+    PetscCall(LoadCaseNames(comm, o.hasCases, o.cases));
+    std::vector<std::string> defined;
+    PetscCall(DefinedLoadCases(&defined));
+    PetscCheck(o.hasCases || defined.empty(), comm, PETSC_ERR_USER_INPUT, "The options define load case '%s' (-load_case_%s_loads) but -load_cases lists no case: give -load_cases (load: cases: in the scene) to run the cases, or leave their options out", defined.empty() ? "" : defined[0].c_str(), defined.empty() ? "" : defined[0].c_str());
+  }
   PetscCall(SceneCheckOptionValues(comm));
   if (!hasScene && !hasDeck && o.helpOnly) { // list the options that do not depend on a scene
     LoadPath        path;
     BoltnetAssembly a;
     PetscCall(LoadPathFromOptions(comm, nullptr, &path));
     PetscCall(BoltnetAssemblyCreate(comm, &a));
-    a->opt.progress = PETSC_TRUE; // as in RunOne
+    a->opt.progress = PETSC_TRUE; // as in RunSetUp
     PetscCall(BoltnetAssemblySetFromOptions(a));
     PetscCall(BoltnetAssemblyDestroy(&a));
     PetscFunctionReturn(0);
   }
   PetscCheck(hasScene || hasDeck, comm, PETSC_ERR_USER_INPUT, "No scene: give -scene <file.yaml> (e.g. -scene share/scenes/fig3c.yaml) or -nastran_deck <file.bdf>; -help lists the options");
+  PetscCheck(!(o.hasCases && (o.every > 0 || restart[0])), comm, PETSC_ERR_USER_INPUT, "-checkpoint_every and -restart are not available with -load_cases (each case is a run of its own from the unloaded state)");
+  std::vector<std::string> lines;
+  size_t                setups = 0;
   if (!hasDeck) {
     const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
-    PetscCall(RunOne(Source{}, scene, o, dir, exitcode, log));
+    size_t            ngroups = 1;
+    for (size_t g = 0; g < ngroups; ++g, ++setups) {
+      PetscCall(RunSetUp(Source{}, scene, o, dir, g, &ngroups, exitcode, log, &lines));
+      if (o.helpOnly || (*exitcode != 0 && *exitcode != 3)) break;
+    }
   } else {
+    PetscCheck(!o.hasCases, comm, PETSC_ERR_USER_INPUT, "-load_cases is for a scene's tables: a Nastran deck's load cases are its subcases (-nastran_subcase chooses one)");
     PetscCheck(o.every == 0 && !restart[0], comm, PETSC_ERR_USER_INPUT, "-checkpoint_every and -restart are not available with -nastran_deck (a deck's subcases are separate runs)");
-    nastran::Deck         deck;
-    std::vector<PetscInt> ids;
-    char                  name[PETSC_MAX_PATH_LEN] = "";
-    const std::string     deckpath = scene.from_file.count("nastran_deck") && deckfile[0] != '/' && !scene.dir.empty() ? scene.dir + "/" + deckfile : std::string(deckfile);
-    const std::string     fastpath = scene.from_file.count("nastran_fasteners") && fasteners[0] && fasteners[0] != '/' && !scene.dir.empty() ? scene.dir + "/" + fasteners : std::string(fasteners);
+    nastran::Deck                      deck;
+    std::vector<PetscInt>              ids;
+    std::vector<std::vector<PetscInt>> groups;
+    char                               name[PETSC_MAX_PATH_LEN] = "";
+    const std::string deckpath = scene.from_file.count("nastran_deck") && deckfile[0] != '/' && !scene.dir.empty() ? scene.dir + "/" + deckfile : std::string(deckfile);
+    const std::string fastpath = scene.from_file.count("nastran_fasteners") && fasteners[0] && fasteners[0] != '/' && !scene.dir.empty() ? scene.dir + "/" + fasteners : std::string(fasteners);
     PetscCall(NastranReadDeck(comm, deckpath.c_str(), nastran::ReadOptions{}, &deck));
     PetscCall(SceneNastranSubcases(comm, deck, subcase, &ids));
+    PetscCall(SceneNastranSetUps(comm, deck, ids, &groups));
     { // the scene's name, or the deck's file name without its extension
       const size_t      slash = deckpath.find_last_of('/');
       const std::string base  = slash == std::string::npos ? deckpath : deckpath.substr(slash + 1);
@@ -233,13 +375,21 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     PetscCall(PetscOptionsHasName(nullptr, nullptr, "-coupling_type", &coupling));
     if (!coupling) PetscCall(PetscOptionsSetValue(nullptr, "-coupling_type", "node"));
     const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
-    for (PetscInt id : ids) {
-      Source src{&deck, id, {}, fastpath};
+    // One set-up per SPC set: the subcases that hold the same dof share it (docs/nastran.md).
+    for (size_t g = 0; g < groups.size(); ++g) {
+      Source src{&deck, groups[g], {}, fastpath};
       src.options.tie_penalty = tie_penalty;
       src.options.bush_offsets = bush_offsets == PETSC_TRUE;
-      PetscCall(RunOne(src, scene, o, dir + "/subcase-" + std::to_string(id), exitcode, log));
-      if (*exitcode || o.helpOnly) break;
+      size_t ngroups = groups.size();
+      PetscCall(RunSetUp(src, scene, o, dir, g, &ngroups, exitcode, log, &lines));
+      ++setups;
+      if (o.helpOnly || (*exitcode != 0 && *exitcode != 3)) break;
     }
+  }
+  // The closing summary, one line per case, when there were several.
+  if (lines.size() > 1) {
+    PetscCall(PetscPrintf(comm, "boltnet: %zu load cases on %zu set-up(s):\n", lines.size(), setups));
+    for (const std::string &l : lines) PetscCall(PetscPrintf(comm, "%s\n", l.c_str()));
   }
   if (o.optionsLeft && !o.helpOnly && *exitcode == 0) PetscCall(UnusedOptionsAsError(comm, "boltnet", PETSC_FALSE, exitcode)); // an error, not a warning
   PetscFunctionReturn(0);

@@ -90,6 +90,10 @@ TEST(SceneYaml, SyntaxAndShape)
   EXPECT_EQ(Error([] { ScanSceneYaml("s.yaml", "a: *nothing\n"); }), "s.yaml line 1, column 4: alias *nothing names no complete anchor before it");
   EXPECT_NE(Error([] { ScanSceneYaml("s.yaml", std::string("a: b\0c\n", 7)); }).find("s.yaml line 1: control characters are not allowed"), std::string::npos);
   EXPECT_EQ(Error([] { ScanSceneYaml("s.yaml", ""); }), ""); // an empty scene file sets nothing
+  // PETSc's reader sets no option for an empty list: `cases: []` would be no list at all (load cases,
+  // docs/scenes.md); a list with items is fine.
+  EXPECT_EQ(Error([] { ScanSceneYaml("s.yaml", "load:\n  cases: []\n"); }), "s.yaml line 2, column 10: 'cases' is an empty list, which sets no option: give its items, or leave the key out");
+  EXPECT_EQ(Error([] { ScanSceneYaml("s.yaml", "load:\n  cases: [a, b]\n  table: [1, -1]\n"); }), "");
 }
 
 TEST(SceneYaml, NestingAndAliasesAreBounded)

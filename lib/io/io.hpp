@@ -17,6 +17,11 @@ struct Scene {
   std::string           name;       // -scene_name
   std::set<std::string> from_file;  // option names (without '-') that the scene file set
   std::string           identified; // JSON object: joint types identified from their geometry
+  // The boundary condition table (-scene_bcs) as read, and the load each of its rows belongs to (its
+  // optional column `load`; "" for none), in the order of the model's conditions: load cases pick
+  // their rows by these names (io/cases.hpp).
+  std::string              bcs_path;
+  std::vector<std::string> bc_loads;
 };
 
 // Insert the options of a YAML scene file; options already given (command line) win.
@@ -27,11 +32,15 @@ PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembl
 // geometry, which may measure the shell mesh around its first joint: id, patches, axis n, t1, x).
 PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::string &type, PetscInt id, PetscInt patch_a, PetscInt patch_b, const PetscReal n[3], const PetscReal t1[3], const PetscReal x[3], BoltnetJointParams *p, Scene *scene);
 // A Nastran deck as the scene (io/nastran.cpp, docs/nastran.md "From a deck to a model"): the ids
-// of the subcases to run (chosen > 0: that one, checked; else every subcase of the deck), and the
-// model of one subcase described into the assembly, with the fastener table (CSV: type and first
-// [, last] or pid; "" for none) turning chosen CBUSH/CFAST into joints of a type.
+// of the subcases to run (chosen > 0: that one, checked; else every subcase of the deck); those
+// ids grouped by the set-up they can share (the same SPC set: the same dof held), in the order of
+// ids; and the model of a group of subcases described into the assembly (the first subcase's
+// model, with the node sets of every subcase's conditions, and its conditions as the model's),
+// with the fastener table (CSV: type and first [, last] or pid; "" for none) turning chosen
+// CBUSH/CFAST into joints of a type. conditions[k]: the conditions of subcases[k].
 PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, PetscInt chosen, std::vector<PetscInt> *ids);
-PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a);
+PetscErrorCode SceneNastranSetUps(MPI_Comm comm, const nastran::Deck &deck, const std::vector<PetscInt> &ids, std::vector<std::vector<PetscInt>> *groups);
+PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, const std::vector<PetscInt> &subcases, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a, std::vector<std::vector<BCDesc>> *conditions);
 // Errors for options in boltnet's own namespaces (scene_, joint_, load_) that nothing used:
 // a misspelled boltnet option stops the run before it starts.
 PetscErrorCode SceneCheckUnusedOptions(MPI_Comm comm);
@@ -93,6 +102,7 @@ struct Output {
   PetscInt  most_joint = -1, most_step = 0;
   PetscReal most_force = -1, most_load = 0;
   std::string identified = "{}"; // joint types identified from geometry at start-up (Scene)
+  std::string load_case;         // the load case's name, "" for a run of one case (summary.json)
   PetscBool   fields     = PETSC_FALSE; // write the fields (OutputOpen decides)
   FieldsFile  ff;
 };

@@ -71,15 +71,29 @@ PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, Pe
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, PetscInt subcase, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a)
+PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, const std::vector<PetscInt> &subcases, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a, std::vector<std::vector<BCDesc>> *conditions)
 {
-  nastran::DeckModel        m;
-  std::vector<FastenerRule> rules;
+  nastran::DeckModel                       m;          // the first subcase's model
+  std::vector<std::vector<nastran::ModelBC>> bcs(subcases.size()); // each subcase's conditions
+  std::vector<FastenerRule>                rules;
+  std::set<std::string>                    said;
   PetscFunctionBeginUser;
-  PetscCall(Input(comm, "turning the Nastran deck into a model", [&] { m = nastran::ModelOf(deck, (int)subcase, options); }));
-  for (const std::string &n : m.notes) PetscCall(PetscPrintf(comm, "boltnet: nastran: %s\n", n.c_str()));
+  PetscCheck(!subcases.empty(), comm, PETSC_ERR_ARG_WRONG, "No subcase to describe");
+  for (size_t k = 0; k < subcases.size(); ++k) {
+    nastran::DeckModel mk;
+    PetscCall(Input(comm, "turning the Nastran deck into a model", [&] { mk = nastran::ModelOf(deck, (int)subcases[k], options); }));
+    for (const std::string &n : mk.notes)
+      if (said.insert(n).second) PetscCall(PetscPrintf(comm, "boltnet: nastran: %s\n", n.c_str()));
+    // The subcases of one set-up hold the same dof (the same SPC set), so they have the same parts
+    // (a constrained grid joined by a CBUSH is a rigid part): the model is the first one's, and of
+    // the others only their conditions are kept.
+    bool same = mk.parts.size() == (k ? m.parts.size() : mk.parts.size()) && mk.joints.size() == (k ? m.joints.size() : mk.joints.size());
+    for (size_t i = 0; same && k > 0 && i < mk.parts.size(); ++i) same = mk.parts[i].pid == m.parts[i].pid;
+    PetscCheck(same, comm, PETSC_ERR_PLIB, "Subcases %" PetscInt_FMT " and %" PetscInt_FMT " make different models", subcases[0], subcases[k]);
+    bcs[k] = std::move(mk.bcs);
+    if (k == 0) m = std::move(mk);
+  }
   if (!fasteners.empty()) PetscCall(ReadFastenerTable(comm, fasteners, &rules));
-
   for (nastran::ModelPart &p : m.parts) {
     if (p.rigid) PetscCall(BoltnetAssemblyAddRigidPatch(a, p.pid, p.x.data()));
     else PetscCall(AssemblyAddShell(a, p.pid, std::move(p.mesh), p.material));
@@ -113,20 +127,48 @@ PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::
   for (const FastenerRule &r : rules)
     PetscCheck(r.used, comm, PETSC_ERR_USER_INPUT, "%s line %d: no CBUSH or CFAST of the deck matches (%s %" PetscInt_FMT "%s)", fasteners.c_str(), r.line, r.pid >= 0 ? "pid" : "elements", r.pid >= 0 ? r.pid : r.first, r.pid >= 0 || r.last == r.first ? "" : (" to " + std::to_string(r.last)).c_str());
 
-  // Node sets are made once per part and name; then one condition per dof.
-  std::set<std::pair<PetscInt, std::string>> made;
+  // Node sets are made once per part and name (for the conditions of every subcase: a name is a
+  // grid, "grid<id>", or a set of the SPC set, "spc<components>", the same in each); then the
+  // first subcase's conditions, one per dof, and the others' as they are.
+  std::map<std::pair<PetscInt, std::string>, std::vector<int>> made;
   const BoltnetBCKind kinds[] = {BOLTNET_BC_FIXED, BOLTNET_BC_DISPLACEMENT, BOLTNET_BC_FORCE};
-  for (const nastran::ModelBC &b : m.bcs) {
-    const PetscInt pid = m.parts[b.part].pid;
-    if (!b.set.empty() && made.insert({pid, b.set}).second) {
-      std::vector<PetscInt> nodes(b.nodes.begin(), b.nodes.end());
-      PetscCall(BoltnetAssemblyAddNodeSet(a, pid, b.set.c_str(), (PetscInt)nodes.size(), nodes.data()));
+  conditions->assign(subcases.size(), {});
+  for (size_t k = 0; k < subcases.size(); ++k)
+    for (const nastran::ModelBC &b : bcs[k]) {
+      const PetscInt pid = m.parts[b.part].pid;
+      if (!b.set.empty()) {
+        auto it = made.find({pid, b.set});
+        if (it == made.end()) {
+          std::vector<PetscInt> nodes(b.nodes.begin(), b.nodes.end());
+          PetscCall(BoltnetAssemblyAddNodeSet(a, pid, b.set.c_str(), (PetscInt)nodes.size(), nodes.data()));
+          made[{pid, b.set}] = b.nodes;
+        } else PetscCheck(it->second == b.nodes, comm, PETSC_ERR_PLIB, "Subcase %" PetscInt_FMT ": node set '%s' of part %" PetscInt_FMT " differs from subcase %" PetscInt_FMT "'s", subcases[k], b.set.c_str(), pid, subcases[0]);
+      }
+      if (k == 0) PetscCall(BoltnetAssemblyAddBCOnSet(a, pid, b.set.c_str(), b.dof, kinds[(int)b.kind], b.value));
+      (*conditions)[k].push_back(BCDesc{pid, b.set, b.dof, kinds[(int)b.kind], b.value});
     }
-    PetscCall(BoltnetAssemblyAddBCOnSet(a, pid, b.set.c_str(), b.dof, kinds[(int)b.kind], b.value));
-  }
   size_t nrigid = 0;
   for (const nastran::ModelPart &p : m.parts) nrigid += p.rigid;
-  PetscCall(PetscPrintf(comm, "boltnet: nastran subcase %" PetscInt_FMT ": %zu shell parts (properties), %zu rigid parts (grids), %zu joints, %zu conditions\n", subcase, m.parts.size() - nrigid, nrigid, m.joints.size(), m.bcs.size()));
+  for (size_t k = 0; k < subcases.size(); ++k)
+    PetscCall(PetscPrintf(comm, "boltnet: nastran subcase %" PetscInt_FMT ": %zu shell parts (properties), %zu rigid parts (grids), %zu joints, %zu conditions\n", subcases[k], m.parts.size() - nrigid, nrigid, m.joints.size(), bcs[k].size()));
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode SceneNastranSetUps(MPI_Comm comm, const nastran::Deck &deck, const std::vector<PetscInt> &ids, std::vector<std::vector<PetscInt>> *groups)
+{
+  PetscFunctionBeginUser;
+  groups->clear();
+  std::map<int, size_t> by_spc; // SPC set id -> group
+  for (PetscInt id : ids) {
+    int spc = 0;
+    PetscCall(Input(comm, "turning the Nastran deck into a model", [&] { spc = nastran::FindSubcase(deck, (int)id).spc; }));
+    auto it = by_spc.find(spc);
+    if (it == by_spc.end()) {
+      it = by_spc.emplace(spc, groups->size()).first;
+      groups->emplace_back();
+    }
+    (*groups)[it->second].push_back(id);
+  }
   PetscFunctionReturn(0);
 }
 

@@ -222,7 +222,9 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   if (a->rank == 0) {
     std::ostringstream j;
     j.precision(17);
-    j << "{\n  \"scene\": " << JsonString(out->scene) << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
+    j << "{\n  \"scene\": " << JsonString(out->scene);
+    if (!out->load_case.empty()) j << ",\n  \"load_case\": " << JsonString(out->load_case);
+    j << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
       << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.joints.size() << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->opt.condense ? "true" : "false") << ",\n  \"dof_imbalance\": " << JsonNumber(a->net.dof_imbalance) << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
       << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))
       << ",\n  \"steps\": " << a->steps.size() << ",\n  \"final_load\": " << JsonNumber(a->lambda) << ",\n  \"cutbacks\": " << a->total_cutbacks << ",\n  \"newton_iterations\": [";

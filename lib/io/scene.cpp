@@ -1,6 +1,7 @@
 // Scenes: a PETSc YAML options file (every parameter is an option) plus CSV tables for the
 // structured lists (patches, joints, boundary conditions) that options cannot hold.
 #include "io/io.hpp"
+#include "io/cases.hpp"
 #include "io/limits.hpp"
 #include "io/scene_yaml.hpp"
 #include "io/input.hpp"
@@ -354,9 +355,10 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
   PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,elements,mesh,part,material] (kind rigid, plate or gmsh; elements quad, tri or mixed)", "", fp, fp, sizeof(fp), nullptr));
   PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z] (n bolt axis, t1 first in-plane direction, x position)", "", fj, fj, sizeof(fj), nullptr));
-  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set] (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N; set: a shell patch's node set)", "", fb, fb, sizeof(fb), nullptr));
+  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set,load] (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N; set: a shell patch's node set; load: the load it belongs to, for -load_cases)", "", fb, fb, sizeof(fb), nullptr));
   PetscOptionsEnd();
   scene->name = name;
+  scene->bc_loads.clear();
   PetscCheck(fp[0] && fj[0] && fb[0], comm, PETSC_ERR_USER_INPUT, "The scene must name its tables: -scene_patches, -scene_joints and -scene_bcs (missing: %s%s%s)", fp[0] ? "" : "-scene_patches ", fj[0] ? "" : "-scene_joints ", fb[0] ? "" : "-scene_bcs");
 
   Table patches, joints, bcs;
@@ -476,10 +478,14 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
     PetscCheck(dofs.count(dof), comm, PETSC_ERR_USER_INPUT, "%s line %d: dof '%s' is not one of ux uy uz rx ry rz all", bcs.path.c_str(), bcs.lines[r], dof.c_str());
     PetscCheck(kinds.count(kind), comm, PETSC_ERR_USER_INPUT, "%s line %d: kind '%s' is not one of fixed displacement force", bcs.path.c_str(), bcs.lines[r], kind.c_str());
     PetscCheck(!(kind == "force" && dof == "all"), comm, PETSC_ERR_USER_INPUT, "%s line %d: a force needs one dof, not 'all'", bcs.path.c_str(), bcs.lines[r]);
-    std::string set;
+    std::string set, load;
     if (HasColumn(bcs, "set")) PetscCall(Cell(comm, bcs, r, "set", &set));
+    if (HasColumn(bcs, "load")) PetscCall(Cell(comm, bcs, r, "load", &load));
+    PetscCheck(load.find_first_not_of(kLoadNameChars) == std::string::npos, comm, PETSC_ERR_USER_INPUT, "%s line %d, column 'load': '%s' is not a load name (lower-case letters, digits, '_' and '-'; empty: a condition of every load case)", bcs.path.c_str(), bcs.lines[r], load.c_str());
     PetscCall(BoltnetAssemblyAddBCOnSet(a, patch, set.c_str(), dofs.at(dof), kinds.at(kind), value));
+    scene->bc_loads.push_back(load);
   }
+  scene->bcs_path = bcs.path;
   PetscFunctionReturn(0);
 }
 

@@ -59,7 +59,10 @@ std::vector<YamlKey> ScanSceneYaml(const std::string &path, const std::string &t
     bool         expect_key; // in a mapping: the next node is a key
     std::string  anchor;
     std::int64_t start; // nodes seen when the level opened (for an anchored node's size)
+    std::string  key;   // a sequence: the key it is the value of
+    int          line = 0, col = 0, items = 0; // a sequence: where it starts, its items so far
   };
+  std::string last_key; // the last key read, at any depth
   std::vector<Level>                  stack;
   std::map<std::string, std::int64_t> anchors; // anchor -> nodes it expands to
   std::int64_t                        nodes = 0;
@@ -81,6 +84,8 @@ std::vector<YamlKey> ScanSceneYaml(const std::string &path, const std::string &t
     const bool closing = type == YAML_MAPPING_END_EVENT || type == YAML_SEQUENCE_END_EVENT;
     if (closing) {
       const Level l = stack.back();
+      // PETSc's reader sets no option for an empty list: `cases: []` would silently be no list.
+      if (!l.mapping && l.items == 0) fail(l.line, l.col, "'" + l.key + "' is an empty list, which sets no option: give its items, or leave the key out");
       stack.pop_back();
       if (!l.anchor.empty()) anchors[l.anchor] = nodes - l.start;
       if (!stack.empty() && stack.back().mapping) stack.back().expect_key = !stack.back().expect_key;
@@ -88,6 +93,8 @@ std::vector<YamlKey> ScanSceneYaml(const std::string &path, const std::string &t
     }
     // A node: a document's root, a key, a value or a sequence item.
     const bool is_key = !stack.empty() && stack.back().mapping && stack.back().expect_key;
+    if (!stack.empty() && !stack.back().mapping) ++stack.back().items;
+    if (is_key && type == YAML_SCALAR_EVENT) last_key.assign(reinterpret_cast<const char *>(ev.e.data.scalar.value), ev.e.data.scalar.length);
     if (stack.empty()) {
       const bool empty_scalar = type == YAML_SCALAR_EVENT && ev.e.data.scalar.length == 0;
       if (type != YAML_MAPPING_START_EVENT && !empty_scalar) fail(line, col, "a scene is a map of sections (name: value), not a single value or a list");
@@ -104,7 +111,7 @@ std::vector<YamlKey> ScanSceneYaml(const std::string &path, const std::string &t
     const unsigned char *anchor = type == YAML_SCALAR_EVENT ? ev.e.data.scalar.anchor : type == YAML_MAPPING_START_EVENT ? ev.e.data.mapping_start.anchor : type == YAML_SEQUENCE_START_EVENT ? ev.e.data.sequence_start.anchor : nullptr;
     if (type == YAML_MAPPING_START_EVENT || type == YAML_SEQUENCE_START_EVENT) {
       if ((int)stack.size() >= limits::kMaxYamlDepth) fail(line, col, "nested deeper than " + std::to_string(limits::kMaxYamlDepth) + " levels");
-      stack.push_back({type == YAML_MAPPING_START_EVENT, true, anchor ? reinterpret_cast<const char *>(anchor) : "", nodes});
+      stack.push_back({type == YAML_MAPPING_START_EVENT, true, anchor ? reinterpret_cast<const char *>(anchor) : "", nodes, last_key, line, col, 0});
       continue;
     }
     if (anchor) anchors[reinterpret_cast<const char *>(anchor)] = 1;

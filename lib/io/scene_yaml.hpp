@@ -14,8 +14,8 @@ struct YamlKey {
 
 // Scans the whole text (every document of the stream). Throws std::runtime_error naming
 // "<path> line L, column C" for a syntax error, a document that is not a map, a key that is not a
-// plain scalar, nesting deeper than limits::kMaxYamlDepth, an unknown alias, or more nodes than
-// limits allow once aliases are expanded. Returns the top-level keys with their lines.
+// plain scalar, nesting deeper than limits::kMaxYamlDepth, an unknown alias, more nodes than
+// limits allow once aliases are expanded, or an empty list (PETSc's reader would set no option). Returns the top-level keys with their lines.
 std::vector<YamlKey> ScanSceneYaml(const std::string &path, const std::string &text);
 
 // The section an option belongs to: its name up to the first '_' ("load" for "load_steps").

@@ -219,6 +219,15 @@ PetscErrorCode AssemblyPatchDisplacement(BoltnetAssembly a, const OwnedPatch &op
 // Solver (solver/*.cpp).
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);
 
+// Load cases on one set-up (network/cases.cpp, docs/scenes.md "Load cases"). AssemblyReset: back to
+// the unloaded state (solution zero, every joint's history its initial value, load factor 0, the
+// record of steps and solves empty, a fresh factorisation next). AssemblySetLoads: the boundary
+// conditions of another case in place of model.bcs: the condensed patches' load terms come from
+// their kept factorisations and the network's rows are rebuilt; an error when the case fixes or
+// prescribes other dof than the set-up (which would need a set-up of its own).
+PetscErrorCode AssemblyReset(BoltnetAssembly a);
+PetscErrorCode AssemblySetLoads(BoltnetAssembly a, const std::vector<BCDesc> &bcs);
+
 // Equilibrium at X for the load factor being solved (solver/equilibrium.cpp): the out-of-balance
 // force (2-norm over the free rows) against the force scale, the largest of the applied loads,
 // the reactions (the internal forces at the constrained rows) and the joint forces, here or at any

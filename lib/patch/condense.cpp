@@ -171,34 +171,29 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
     for (int c = 0; c < 6; ++c) row[6 * p.carried[k] + c] = cp->ni + 6 * (PetscInt)k + c;
   const PetscInt n = cp->ni + cp->nb;
 
-  // K over I and B; the columns of D go to the load terms, per unit load factor.
+  // K over I and B; the entries of K in the columns of D are kept for the load terms
+  // (CondensedPatchLoads), which change from one load case to the next.
   Triplets              t = PatchTriplets(p, type, penalty, radius, false);
   std::vector<PetscInt> nnz(n, 0);
-  std::vector<double>   rI(cp->ni, 0.0), cB(cp->nb, 0.0);
+  cp->kd.clear();
   for (const auto &[r, c, v] : t) {
     const PetscInt R = row[r], C = row[c];
     if (R >= 0 && C >= 0) nnz[R]++;
-    if (R >= 0 && C == -2) (R < cp->ni ? rI[R] : cB[R - cp->ni]) -= v * cp->prescribed.at(c);
+    if (R >= 0 && C == -2) cp->kd.push_back({R, c, v});
   }
-  for (const auto &[d, f] : loads.force)
-    if (row[d] >= 0 && row[d] < cp->ni) rI[row[d]] += f; // forces on the ports are the network's
+  cp->row = std::move(row);
   for (PetscInt r = 0; r < n; ++r) nnz[r] = std::min(nnz[r], n); // duplicates are summed
   PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), cp->K.out()));
   Mat K = cp->K.get();
   PetscCall(MatSetOption(K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
   for (const auto &[r, c, v] : t) {
-    const PetscInt R = row[r], C = row[c];
+    const PetscInt R = cp->row[r], C = cp->row[c];
     if (R >= 0 && C >= 0) PetscCall(MatSetValue(K, R, C, v, ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
   cp->S.assign((size_t)cp->nb * cp->nb, 0.0);
-  cp->c.assign(cp->nb, 0.0);
-  cp->w0.assign(cp->ni, 0.0);
-  // K's rows of the load terms that prescribed interior dof give the ports: -K_BD u_D was summed
-  // in cB with the sign of a force; the internal force is +K_BD u_D.
-  for (PetscInt b = 0; b < cp->nb; ++b) cp->c[b] = -cB[b];
 
   if (cp->ni == 0) { // every dof is a port: S is K itself
     for (PetscInt r = 0; r < n; ++r) {
@@ -209,6 +204,7 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
       for (PetscInt k = 0; k < nc; ++k) cp->S[(size_t)r * cp->nb + cols[k]] = vals[k];
       PetscCall(MatRestoreRow(K, r, &nc, &cols, &vals));
     }
+    PetscCall(CondensedPatchLoads(p.id, loads, cp));
     PetscFunctionReturn(0);
   }
 
@@ -250,34 +246,60 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
   ProjectFreeRigidMotions(p, cp);
   PetscCall(PetscInfo(nullptr, "patch of part %" PetscInt_FMT ": %" PetscInt_FMT " interior and %" PetscInt_FMT " port dof, %" PetscInt_FMT " free rigid-body motions\n", p.id, cp->ni, cp->nb, cp->free_motions));
   PetscCall(MatMumpsSetIcntl(F, 26, 0)); // from now on MatSolve solves with K_II alone
-  // w0 and c.
-  bool loaded = false;
-  for (double v : rI) loaded = loaded || v != 0;
-  if (loaded) {
-    VecHandle b, x, y;
-    PetscCall(MatCreateVecs(K, x.out(), b.out()));
-    PetscCall(VecDuplicate(b.get(), y.out()));
-    PetscScalar *bb;
-    PetscCall(VecGetArray(b.get(), &bb));
-    for (PetscInt i = 0; i < n; ++i) bb[i] = i < cp->ni ? rI[i] : 0.0;
-    PetscCall(VecRestoreArray(b.get(), &bb));
-    PetscCall(MatSolve(F, b.get(), x.get()));
-    PetscScalar *xx;
-    PetscCall(VecGetArray(x.get(), &xx));
-    for (PetscInt i = 0; i < cp->ni; ++i) cp->w0[i] = xx[i];
-    for (PetscInt i = cp->ni; i < n; ++i) xx[i] = 0.0;
-    PetscCall(VecRestoreArray(x.get(), &xx));
-    PetscCall(MatMult(K, x.get(), y.get())); // K_BI w0 in the port rows
-    const PetscScalar *yy;
-    PetscCall(VecGetArrayRead(y.get(), &yy));
-    for (PetscInt b2 = 0; b2 < cp->nb; ++b2) cp->c[b2] += yy[cp->ni + b2];
-    PetscCall(VecRestoreArrayRead(y.get(), &yy));
-  }
+  PetscCall(CondensedPatchLoads(p.id, loads, cp));
   PetscInt factor_mb = 0;
   PetscCall(MatMumpsGetInfog(F, 22, &factor_mb)); // MB of MUMPS working memory at the factorisation
   MatInfo kinfo;
   PetscCall(MatGetInfo(K, MAT_LOCAL, &kinfo));
-  cp->bytes = 8.0 * (double)cp->S.size() + 1e6 * (double)factor_mb + kinfo.memory;
+  cp->bytes = 8.0 * (double)cp->S.size() + 1e6 * (double)factor_mb + kinfo.memory + (double)(sizeof(PetscInt) * cp->row.size() + sizeof(cp->kd[0]) * cp->kd.size());
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode CondensedPatchLoads(PetscInt id, const PatchLoads &loads, CondensedPatch *cp)
+{
+  PetscFunctionBeginUser;
+  const PetscInt n = cp->ni + cp->nb;
+  // The split of the patch's dof was made for the supports it was condensed with: a load case may
+  // change their values and the forces, not which dof are held.
+  size_t held = 0, interior = 0; // prescribed dof: held inside the patch before, and interior unknowns then
+  for (const auto &[d, v] : loads.prescribed) {
+    const PetscInt r = d < (PetscInt)cp->row.size() ? cp->row[d] : -1;
+    held += r == -2;
+    interior += r >= 0 && r < cp->ni;
+  }
+  PetscCheck(interior == 0 && held == cp->prescribed.size(), PETSC_COMM_SELF, PETSC_ERR_ARG_INCOMP, "Patch of part %" PetscInt_FMT ": these loads hold other dof than those it was condensed with (%zu of its interior then, %zu now): a load case may change prescribed values and forces, not which dof are fixed or prescribed", id, cp->prescribed.size(), held + interior);
+  for (auto &[d, v] : cp->prescribed) v = loads.prescribed.at(d);
+  // -K_ID u_D (interior) and -K_BD u_D (ports), summed with the sign of a force.
+  std::vector<double> rI(cp->ni, 0.0), cB(cp->nb, 0.0);
+  for (const auto &[R, d, v] : cp->kd) (R < cp->ni ? rI[R] : cB[R - cp->ni]) -= v * cp->prescribed.at(d);
+  for (const auto &[d, f] : loads.force)
+    if (cp->row[d] >= 0 && cp->row[d] < cp->ni) rI[cp->row[d]] += f; // forces on the ports are the network's
+  // The internal force on the ports is +K_BD u_D, then + K_BI w0.
+  cp->c.assign(cp->nb, 0.0);
+  cp->w0.assign(cp->ni, 0.0);
+  for (PetscInt b = 0; b < cp->nb; ++b) cp->c[b] = -cB[b];
+  bool loaded = false;
+  for (double v : rI) loaded = loaded || v != 0;
+  if (!loaded) PetscFunctionReturn(0);
+  Mat       K = cp->K.get();
+  VecHandle b, x, y;
+  PetscCall(MatCreateVecs(K, x.out(), b.out()));
+  PetscCall(VecDuplicate(b.get(), y.out()));
+  PetscScalar *bb;
+  PetscCall(VecGetArray(b.get(), &bb));
+  for (PetscInt i = 0; i < n; ++i) bb[i] = i < cp->ni ? rI[i] : 0.0;
+  PetscCall(VecRestoreArray(b.get(), &bb));
+  PetscCall(MatSolve(cp->F.get(), b.get(), x.get())); // K_II alone (ICNTL(26) = 0)
+  PetscScalar *xx;
+  PetscCall(VecGetArray(x.get(), &xx));
+  for (PetscInt i = 0; i < cp->ni; ++i) cp->w0[i] = xx[i];
+  for (PetscInt i = cp->ni; i < n; ++i) xx[i] = 0.0;
+  PetscCall(VecRestoreArray(x.get(), &xx));
+  PetscCall(MatMult(K, x.get(), y.get())); // K_BI w0 in the port rows
+  const PetscScalar *yy;
+  PetscCall(VecGetArrayRead(y.get(), &yy));
+  for (PetscInt b2 = 0; b2 < cp->nb; ++b2) cp->c[b2] += yy[cp->ni + b2];
+  PetscCall(VecRestoreArrayRead(y.get(), &yy));
   PetscFunctionReturn(0);
 }
 

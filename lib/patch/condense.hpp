@@ -20,6 +20,7 @@
 
 #include <petscmat.h>
 
+#include <tuple>
 #include <vector>
 
 namespace boltnet {
@@ -33,6 +34,11 @@ struct CondensedPatch {
   std::vector<PetscInt> interior; // patch dof of each interior unknown (K's rows 0..ni-1)
   std::vector<double>   w0;       // interior displacement per unit load factor when u_B = 0
   std::map<PetscInt, double> prescribed; // interior prescribed dof -> value per unit load factor
+  // What the load terms need when the loads change (a load case: CondensedPatchLoads): the row of
+  // K of every patch dof (-1: a slave; -2: a prescribed interior dof), and K's entries in the
+  // columns of the prescribed dof, as (row of K, patch dof, value).
+  std::vector<PetscInt>                              row;
+  std::vector<std::tuple<PetscInt, PetscInt, double>> kd;
   SlaveMap              slaves;   // exact coupling (empty master list otherwise)
   MatHandle             K;        // (ni + nb) x (ni + nb): interior rows first, then the ports
   MatHandle             F;        // its MUMPS factorisation, Schur complement on the ports
@@ -43,6 +49,12 @@ struct CondensedPatch {
 // Condense the patch (its operator with the given coupling, its loads). Errors name the patch: a
 // singular interior (a part of the patch that neither a joint, a seam nor a support holds).
 PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double penalty, double radius, const PatchLoads &loads, CondensedPatch *cp);
+
+// The load terms c and w0 (and the prescribed values) of a condensed patch for other loads, with its
+// kept factorisation: one interior solve, no new factorisation. The loads must hold the same dof
+// inside the patch as those it was condensed with (else an error naming the patch, id); forces and
+// prescribed values may differ. CondensePatch ends with it.
+PetscErrorCode CondensedPatchLoads(PetscInt id, const PatchLoads &loads, CondensedPatch *cp);
 
 // Every dof of the patch (6 per node: mesh nodes, then joint nodes) from its port dof uB at load
 // factor lambda: the ports, the interior (one solve with the kept factorisation), the prescribed
