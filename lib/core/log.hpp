@@ -8,7 +8,7 @@
 namespace boltnet {
 struct LogEvents {
   PetscClassId  classid = 0;
-  PetscLogEvent layout = 0, network = 0, condense = 0, residual = 0, jacobian = 0, joints = 0, recover = 0, output = 0;
+  PetscLogEvent layout = 0, network = 0, condense = 0, residual = 0, jacobian = 0, joints = 0, recover = 0, output = 0, joint_output = 0, joint_gather = 0;
 };
 // The package's events (valid after BoltnetInitializePackage()).
 const LogEvents &Events();

@@ -49,6 +49,8 @@ PetscErrorCode BoltnetInitializePackage(void)
   PetscCall(PetscLogEventRegister("BoltnetJoints", events.classid, &events.joints));
   PetscCall(PetscLogEventRegister("BoltnetRecover", events.classid, &events.recover));
   PetscCall(PetscLogEventRegister("BoltnetOutput", events.classid, &events.output));
+  PetscCall(PetscLogEventRegister("BoltnetJointOutput", events.classid, &events.joint_output));
+  PetscCall(PetscLogEventRegister("BoltnetJointGather", events.classid, &events.joint_gather));
   PetscCall(PetscRegisterFinalize(BoltnetFinalizePackage));
   PetscFunctionReturn(0);
 }
