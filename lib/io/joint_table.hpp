@@ -16,7 +16,7 @@ namespace boltnet {
 enum class JointOutput : int { Auto = 0, Csv = 1, Hdf5 = 2, Both = 3 };
 struct JointOutputOptions {
   JointOutput mode  = JointOutput::Auto; // -output_joints
-  PetscInt    limit = 5000;              // -output_joints_auto_limit: auto writes joints.h5 from this many joints on
+  PetscInt    limit = 10000;             // -output_joints_auto_limit: auto writes joints.h5 from this many joints on
 };
 // Reads -output_joints and -output_joints_auto_limit (inside the caller's PetscOptionsBegin/End, so
 // that -help lists them).

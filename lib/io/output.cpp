@@ -213,10 +213,10 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
     PetscCall(ShareAnyError(a->comm, ierr ? FieldsError(out, info, log) : ""));
   }
   PetscCall(PetscLogEventEnd(Events().output, 0, 0, 0, 0));
+  std::vector<JointRecord> mine;
+  PetscCall(AssemblyJointRecords(a, mine)); // collective: the ranks start the joint output together
   // -log_view: the joint output's time is BoltnetJointOutput (scripts/bench-output --joints).
   PetscCall(PetscLogEventBegin(Events().joint_output, 0, 0, 0, 0));
-  std::vector<JointRecord> mine;
-  PetscCall(AssemblyJointRecords(a, mine));
   PetscCall(MostLoaded(a, info, mine, out));
   if (out->files.hdf5) {
     ErrorLog log;
