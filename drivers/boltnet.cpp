@@ -70,6 +70,7 @@ struct DriverOptions {
   std::string dir, ckfile, restart;
   PetscBool     helpOnly = PETSC_FALSE, optionsLeft = PETSC_FALSE;
   FieldsOptions fields;
+  JointOutputOptions joints;
   PetscInt      every = 0;
   PetscBool     hasCases = PETSC_FALSE;  // -load_cases given
   std::vector<std::string> cases;        // its names
@@ -155,8 +156,8 @@ PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, con
   if (o.every > 0 && !o.ckfile.empty()) PetscCall(CheckpointCheckFile(comm, ckpt)); // the default's directory is -output_dir
   if (!o.restart.empty()) {
     PetscCall(CheckpointLoad(a, ident, o.restart.c_str(), &out));
-    PetscCall(OutputResume(comm, dir, scene.name, o.fields, a, &out));
-  } else PetscCall(OutputOpen(comm, dir, scene.name, o.fields, a, &out));
+    PetscCall(OutputResume(comm, dir, scene.name, o.fields, o.joints, a, &out));
+  } else PetscCall(OutputOpen(comm, dir, scene.name, o.fields, o.joints, a, &out));
   out.identified = "{" + scene.identified + "}";
   out.load_case  = c.name;
   a->on_step = [&](BoltnetAssembly as, const StepInfo &info) {
@@ -286,8 +287,9 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscCall(PetscOptionsGetBool(nullptr, nullptr, "-options_left", &o.optionsLeft, nullptr));
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
-  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv, summary.json and the fields (default results/<scene name>; a load case: its folder <case> in it; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
+  PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv or joints.h5, summary.json and the fields (default results/<scene name>; a load case: its folder <case> in it; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
   PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &o.fields));
+  PetscCall(JointOutputOptionsFromCommandLine(PetscOptionsObject, &o.joints));
   PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", o.every, &o.every, nullptr));
   PetscCall(PetscOptionsString("-checkpoint_file", "The checkpoint file (default <output_dir>/checkpoint.h5), replaced whole at every checkpoint", "", ckfile, ckfile, sizeof(ckfile), nullptr));
   PetscCall(PetscOptionsString("-restart", "Go on from this checkpoint: same scene and options (those that change results), results continued in -output_dir", "", restart, restart, sizeof(restart), nullptr));

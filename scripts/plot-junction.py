@@ -3,7 +3,7 @@
 
   scripts/plot-junction.py RESULTS_DIR SCENE.yaml -o OUT_DIR [--compare LINEAR_RESULTS_DIR] [--levels 1,2.5,-1]
 
-reads RESULTS_DIR/{joints.csv,summary.json,fields.h5} and the scene's metadata (NAME.fasteners.csv,
+reads RESULTS_DIR/{joints.csv (or the joint table joints.h5),summary.json,fields.h5} and the scene's metadata (NAME.fasteners.csv,
 NAME.model.json), and writes into OUT_DIR:
 
 - load-transfer.png: the load of each fastener (signed: spanwise on the skin splices, vertical
@@ -46,11 +46,27 @@ SPLICES = ["upper_outer", "upper_centre", "lower_outer", "lower_centre", "front_
            "rear_spar_outer", "rear_spar_centre", "fuselage_lap"]
 
 
+def table_rows(path):
+    """joints.h5 (-output_joints hdf5, docs/output.md "The joint table") as joints.csv's rows."""
+    with h5py.File(path, "r") as f:
+        names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["state_names"][()]]
+        step, load, ids = f["step"][()], f["load"][()], f["joint"][()]
+        state, bearing, jump, force, slip = (f[k][()] for k in ("state", "bearing", "jump", "force", "slip"))
+    cols = ["du_n", "du_t1", "du_t2", "f_n", "f_t1", "f_t2", "slip_t1", "slip_t2"]
+    for s in range(len(step)):
+        for j, jid in enumerate(ids):
+            vals = [*jump[s, j, :3], *force[s, j, :3], *slip[s, j]]
+            yield {"step": str(step[s]), "load": repr(float(load[s])), "joint": str(jid), "state": names[state[s, j]],
+                   "bearing": str(bearing[s, j]), **{c: repr(float(v)) for c, v in zip(cols, vals)}}
+
+
 def read_run(res):
-    for f in ("joints.csv", "summary.json"):
+    table = os.path.join(res, "joints.h5")
+    use_table = not os.path.exists(os.path.join(res, "joints.csv")) and os.path.exists(table)
+    for f in ("summary.json",) if use_table else ("joints.csv", "summary.json"):
         if not os.path.exists(os.path.join(res, f)):
             sys.exit(f"plot-junction.py: cannot read '{os.path.join(res, f)}'")
-    rows = list(csv.DictReader(open(os.path.join(res, "joints.csv"))))
+    rows = list(table_rows(table)) if use_table else list(csv.DictReader(open(os.path.join(res, "joints.csv"))))
     steps = {}
     for r in rows:
         steps.setdefault(int(r["step"]), {})[int(r["joint"])] = r

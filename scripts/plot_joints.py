@@ -1,15 +1,19 @@
 #!/usr/bin/python3
-"""Chart the joints.csv written by the boltnet driver.
+"""Chart the joints.csv, or the joint table joints.h5, written by the boltnet driver.
 
 Default (paper fig. 3c): x = load factor, y = jump du_t1 (mm), one line per joint,
 markers coloured (and shaped) by the joint state at that step.
 --force: the joint's own response curve, x = du_t1 (mm), y = f_t1 (N).
 
-Usage: plot_joints.py joints.csv -o out.png [--joint ID ...] [--x load|du_t1] [--title T] [--force]
+joints.h5 (-output_joints hdf5, docs/output.md "The joint table") gives the same chart as joints.csv
+of the same run; --data FILE also writes the chart's data (per joint: x, y, states) as JSON.
+
+Usage: plot_joints.py joints.csv|joints.h5 -o out.png [--joint ID ...] [--x load|du_t1] [--title T] [--force] [--data FILE]
 """
 # Debian's /usr/bin/python3 is used on purpose: python3-matplotlib/python3-numpy install there.
 import argparse
 import csv
+import json
 import sys
 
 try:
@@ -89,13 +93,37 @@ def read_rows(path):
     return joints
 
 
+def read_table(path):
+    """The same as read_rows, from joints.h5: datasets of shape (steps, joints[, columns])."""
+    try:
+        import h5py
+    except ImportError:
+        fail("reading joints.h5 needs h5py: install python3-h5py (apt-get install python3-h5py, or run scripts/deps)")
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        fail(f"cannot read {path}: {e}")
+    with f:
+        missing = [k for k in ("step", "load", "joint", "state", "state_names", "jump", "force") if k not in f]
+        if missing:
+            fail(f"{path}: not a boltnet joint table: no dataset(s) {', '.join(missing)}")
+        names = [n.decode() if isinstance(n, bytes) else str(n) for n in f["state_names"][()]]
+        step, load, ids = f["step"][()], f["load"][()], f["joint"][()]
+        state, jump, force = f["state"][()], f["jump"][()], f["force"][()]
+    if len(step) == 0:
+        fail(f"{path} holds no step")
+    cols = {"load": lambda j: load, "du_t1": lambda j: jump[:, j, 1], "f_t1": lambda j: force[:, j, 1], "f_t2": lambda j: force[:, j, 2]}
+    return {str(int(jid)): {"step": [int(s) for s in step], "state": [names[c] for c in state[:, j]],
+                            **{c: np.asarray(cols[c](j), dtype=float) for c in NUMERIC}} for j, jid in enumerate(ids)}
+
+
 def joint_sort_key(jid):
     return (0, int(jid), "") if jid.lstrip("-").isdigit() else (1, 0, jid)
 
 
 def main():
     ap = argparse.ArgumentParser(description="Plot the joint jumps/forces of a boltnet joints.csv.")
-    ap.add_argument("csv", help="joints.csv written by the boltnet driver")
+    ap.add_argument("csv", help="joints.csv or joints.h5 written by the boltnet driver")
     ap.add_argument("-o", "--output", required=True, help="output image (e.g. out.png)")
     ap.add_argument("--joint", nargs="+", metavar="ID", help="only these joint ids (default: all)")
     ap.add_argument("--x", choices=["load", "du_t1"], default="load",
@@ -106,9 +134,10 @@ def main():
                     help="plot each joint's share of the in-plane force carried by the plotted joints, "
                          "|f_t| / sum |f_t| at each step, against the load (the load share of each fastener)")
     ap.add_argument("--title", help="chart title (default: the CSV path)")
+    ap.add_argument("--data", help="also write the chart's data (per joint: x, y and states) to this JSON file")
     args = ap.parse_args()
 
-    joints = read_rows(args.csv)
+    joints = read_table(args.csv) if args.csv.endswith((".h5", ".hdf5")) else read_rows(args.csv)
     ids = sorted(joints, key=joint_sort_key)
     if args.joint:
         wanted = [j.strip() for j in args.joint]
@@ -145,11 +174,13 @@ def main():
     fig, ax = plt.subplots(figsize=(8, 5.5))
     line_handles = []
     states_seen = []
+    data = {"x": xcol, "y": ycol, "joints": {}}
     for i, jid in enumerate(ids):
         d = joints[jid]
         order = np.argsort(d["step"], kind="stable")  # steps in order, even if ranks wrote out of order
         x, y = d[xcol][order], d[ycol][order]
         states = [d["state"][k] for k in order]
+        data["joints"][jid] = {"x": x.tolist(), "y": y.tolist(), "state": states}
         style = JOINT_STYLES[(i // len(JOINT_COLORS)) % len(JOINT_STYLES)]
         (line,) = ax.plot(x, y, style, color=JOINT_COLORS[i % len(JOINT_COLORS)], lw=1.3,
                           label=f"joint {jid}", zorder=2)
@@ -183,6 +214,12 @@ def main():
     except OSError as e:
         fail(f"cannot write {args.output}: {e.strerror}")
     print(f"plot_joints.py: wrote {args.output}")
+    if args.data:
+        try:
+            with open(args.data, "w") as f:
+                json.dump(data, f)
+        except OSError as e:
+            fail(f"cannot write {args.data}: {e.strerror}")
 
 
 if __name__ == "__main__":

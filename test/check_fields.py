@@ -11,7 +11,6 @@
 - the element results agree with one another: von Mises and principal stresses from the surface
   stresses, the material-frame resultants the element-frame ones turned from /shells/element_axis to
   /shells/material_axis;
-- with -output_joints_hdf5, each step's /joints/table equals joints.csv's rows;
 - one temporal step per converged step of joints.csv (rows = steps x joints), times increasing,
   each step's load factor (Information "load" and the HDF5 attribute) equal to joints.csv's;
 - independent of the writer: at every step, each joint line's endpoint displacements, differenced
@@ -211,22 +210,6 @@ def main():
     if maxerr > 1e-9 * scale:
         fail(f"joint line displacements differ from the jumps of joints.csv by {maxerr:g} (largest jump {scale:g})")
     print(f"check_fields: {len(steps)} steps, {njoints} joints; line endpoints vs jumps: max difference {maxerr:.3g} (largest jump {scale:.3g})")
-
-    # joints.csv as an HDF5 table (-output_joints_hdf5).
-    ntables = 0
-    for t in times:
-        g = h5[f"/steps/{int(t):06d}/joints"]
-        if "table" not in g:
-            continue
-        ntables += 1
-        byjoint = {int(q["joint"]): q for q in bystep.get(int(t), [])}
-        for row in g["table"][:]:
-            r = byjoint[int(row[0])]
-            ref = [STATES[r["state"]]] + [float(r[k]) for k in ("du_n", "du_t1", "du_t2", "f_n", "f_t1", "f_t2", "bearing", "slip_t1", "slip_t2")]
-            if np.abs(row[1:] - np.array(ref)).max() > 1e-12 * max(1.0, np.abs(ref).max()):
-                fail(f"step {int(t)} joint {int(row[0])}: table row {row[1:]} vs joints.csv {ref}")
-    if ntables:
-        print(f"check_fields: {ntables} steps' /joints/table equal joints.csv")
 
     if "shells" in h5:
         check_numbering(h5)

@@ -7,7 +7,8 @@
 #    fails if the run had finished by then: it would not have tested a kill.
 # 2. A checkpoint.h5.tmp of garbage is left beside the checkpoint (a kill during a checkpoint's
 #    write), and the run is restarted on RESTART_RANKS ranks with -restart.
-# 3. joints.csv against REFERENCE_DIR's (compare_csv.py, RTOL of each quantity's scale), summary.json's
+# 3. joints.csv and/or joints.h5, whichever REFERENCE_DIR has, against REFERENCE_DIR's (compare_csv.py,
+#    check_joint_table.py: RTOL of each quantity's scale), summary.json's
 #    record of the steps and, with --fields, fields.h5 + fields.xdmf (check_fields.py --ref, FIELDS_RTOL).
 set -u
 mpiexec=$1 boltnet=$2 ranks=$3 restart_ranks=$4 every=$5 ref=$6 out=$7 rtol=$8
@@ -44,8 +45,11 @@ rm -rf "$scratch"
 [ -e "$out/summary.json" ] && die "the run finished before it was killed (exit $status): give it a longer load path"
 [ "$status" -ge 128 ] || die "the killed run exited $status, not by a signal"
 kept=$("$py" -c "import h5py, sys; print(h5py.File(sys.argv[1], 'r').attrs['steps'])" "$ckpt")
-rows=$(($(wc -l < "$out/joints.csv") - 1))
-echo "check_restart: killed (exit $status) with $rows rows in joints.csv; the checkpoint is at step $kept"
+if [ -e "$out/joints.csv" ]; then
+  echo "check_restart: killed (exit $status) with $(($(wc -l < "$out/joints.csv") - 1)) rows in joints.csv; the checkpoint is at step $kept"
+else
+  echo "check_restart: killed (exit $status) with $("$py" -c "import h5py, sys; print(len(h5py.File(sys.argv[1], 'r')['step']))" "$out/joints.h5" 2> /dev/null || echo "(unreadable)") steps in joints.h5; the checkpoint is at step $kept"
+fi
 
 head -c 1000 /dev/urandom > "$ckpt.tmp"
 "$mpiexec" -n "$restart_ranks" --oversubscribe "$boltnet" "$@" -output_dir "$out" -restart "$ckpt" > "$out.restart.log" 2>&1
@@ -54,7 +58,16 @@ cat "$out.restart.log"
 [ $status = 0 ] || die "the restart exited $status"
 grep -q "restart from $ckpt at step $kept" "$out.restart.log" || die "the restart did not start at step $kept"
 
-"$py" "$here/compare_csv.py" "$ref/joints.csv" "$out/joints.csv" "$rtol" || die "joints.csv differs from $ref/joints.csv"
+compared=0
+if [ -e "$ref/joints.csv" ]; then
+  "$py" "$here/compare_csv.py" "$ref/joints.csv" "$out/joints.csv" "$rtol" || die "joints.csv differs from $ref/joints.csv"
+  compared=1
+fi
+if [ -e "$ref/joints.h5" ]; then
+  "$py" "$here/check_joint_table.py" "$out" --ref "$ref" --rtol "$rtol" || die "joints.h5 differs from $ref/joints.h5"
+  compared=1
+fi
+[ $compared = 1 ] || die "$ref has neither joints.csv nor joints.h5"
 "$py" - "$ref/summary.json" "$out/summary.json" "$rtol" << 'EOF' || die "summary.json differs"
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:3])

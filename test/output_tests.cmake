@@ -37,10 +37,10 @@ add_test(NAME fig3a_meshio_np2 COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_
 set_tests_properties(fig3a_meshio_np2 PROPERTIES FIXTURES_REQUIRED fig3a_np2)
 
 # A scene name with every character XML escapes (and a tab, which an attribute value keeps only as a
-# character reference) still gives valid xdmf files, which meshio and the checker read; with
-# -output_joints_hdf5 each step's /joints/table equals joints.csv. lap-rows on 2 ranks: eight shell
-# parts and their joints.
-boltnet_run(odd_name 2 ${BOLTNET_SCENES}/lap-rows.yaml -load_steps 3 -output_joints_hdf5 -scene_name "a<b>&c\"d'e\tf")
+# character reference) still gives valid xdmf files, which meshio and the checker read, and a joint
+# table whose scene attribute holds it (odd_name_table). lap-rows on 2 ranks: eight shell parts and
+# their joints.
+boltnet_run(odd_name 2 ${BOLTNET_SCENES}/lap-rows.yaml -load_steps 3 -output_joints both -scene_name "a<b>&c\"d'e\tf")
 add_test(NAME odd_name_fields COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fields.py ${BOLTNET_OUT}/odd_name_np2 ${BOLTNET_SCENES}/lap-rows.joints.csv)
 add_test(NAME odd_name_meshio COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_meshio.py ${BOLTNET_OUT}/odd_name_np2)
 set_tests_properties(odd_name_fields odd_name_meshio PROPERTIES FIXTURES_REQUIRED odd_name_np2)

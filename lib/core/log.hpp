@@ -12,7 +12,7 @@
 namespace boltnet {
 struct LogEvents {
   PetscClassId  classid = 0;
-  PetscLogEvent layout = 0, network = 0, condense = 0, residual = 0, jacobian = 0, joints = 0, recover = 0, output = 0;
+  PetscLogEvent layout = 0, network = 0, condense = 0, residual = 0, jacobian = 0, joints = 0, recover = 0, output = 0, joint_output = 0, joint_gather = 0;
   PetscLogStage setup_stage = 0, condense_stage = 0, solve_stage = 0, output_stage = 0;
 };
 // The package's events (valid after BoltnetInitializePackage()).

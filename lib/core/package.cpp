@@ -49,6 +49,8 @@ PetscErrorCode BoltnetInitializePackage(void)
   PetscCall(PetscLogEventRegister("BoltnetJoints", events.classid, &events.joints));
   PetscCall(PetscLogEventRegister("BoltnetRecover", events.classid, &events.recover));
   PetscCall(PetscLogEventRegister("BoltnetOutput", events.classid, &events.output));
+  PetscCall(PetscLogEventRegister("BoltnetJointOutput", events.classid, &events.joint_output));
+  PetscCall(PetscLogEventRegister("BoltnetJointGather", events.classid, &events.joint_gather));
   PetscCall(PetscLogStageRegister("Boltnet Set-up", &events.setup_stage));
   PetscCall(PetscLogStageRegister("Boltnet Condense", &events.condense_stage));
   PetscCall(PetscLogStageRegister("Boltnet Solve", &events.solve_stage));

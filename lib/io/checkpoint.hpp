@@ -54,8 +54,8 @@ PetscErrorCode CheckpointLoad(BoltnetAssembly a, const CheckpointIdentity &id, c
 
 // After CheckpointLoad, instead of OutputOpen: the results of the run that wrote the checkpoint,
 // continued in dir (io/resume.cpp). joints.csv and bypass.csv keep their rows up to the checkpoint's step and take
-// the next ones after them; fields.h5 drops any step after it and takes the next ones; fields.xdmf
+// the next ones after them, joints.h5 its steps up to it; fields.h5 drops any step after it and takes the next ones; fields.xdmf
 // is rewritten with the next step. Everything is checked before anything is changed.
-PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out);
+PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, const JointOutputOptions &joints, BoltnetAssembly a, Output *out);
 
 } // namespace boltnet

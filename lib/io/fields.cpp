@@ -233,12 +233,8 @@ PetscErrorCode WriteJoints(BoltnetAssembly a, FieldsFile *ff, const StepFields &
     rows.insert(rows.end(), {(double)l.state, std::hypot(l.force[1], l.force[2])});
     rows.insert(rows.end(), l.force.begin(), l.force.begin() + 3);
     rows.insert(rows.end(), l.jump.begin(), l.jump.begin() + 3);
-    // The columns of joints.csv after step and load (the group's attributes); the state as its code.
-    if (ff->opt.joints_hdf5) rows.insert(rows.end(), {(double)l.id, (double)l.state, l.jump[0], l.jump[1], l.jump[2], l.force[0], l.force[1], l.force[2], (double)l.bearing, l.slip[0], l.slip[1]});
   }
-  std::vector<Column> cols = {{"displacement", 6, Column::Pairs}, {"state", 1, Column::Int}, {"in_plane_force", 1, Column::Real}, {"force", 3, Column::Real}, {"jump", 3, Column::Real}};
-  if (ff->opt.joints_hdf5) cols.push_back({"table", 11, Column::Real});
-  PetscCall(WritePacked(comm, v, m.joints, cols, rows));
+  PetscCall(WritePacked(comm, v, m.joints, {{"displacement", 6, Column::Pairs}, {"state", 1, Column::Int}, {"in_plane_force", 1, Column::Real}, {"force", 3, Column::Real}, {"jump", 3, Column::Real}}, rows));
   PetscFunctionReturn(0);
 }
 
@@ -342,7 +338,6 @@ PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5, fields.xdmf and joints.xdmf per converged step (shell displacement/rotation and element results, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", o->fields, &o->fields, nullptr));
   PetscCall(PetscOptionsBool("-output_stresses", "With the fields, the element resultants N, M, Q, surface strains and stresses of every step", "", o->results, &o->results, nullptr));
-  PetscCall(PetscOptionsBool("-output_joints_hdf5", "With the fields, the joints.csv table of every step also as the dataset /steps/NNNNNN/joints/table of fields.h5", "", o->joints_hdf5, &o->joints_hdf5, nullptr));
   PetscCall(PetscOptionsReal("-output_bypass_width", "Width w (mm) of the strip whose force balance gives the bypass load in bypass.csv; 0: 6 -coupling_radius", "", o->bypass_width, &o->bypass_width, nullptr));
   PetscCheck(o->bypass_width >= 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-output_bypass_width %g: a width must be positive (or 0 for the default)", (double)o->bypass_width);
   PetscCall(PetscOptionsBool("-output_fields_gather", "Write the fields from rank 0 after gathering them (the former writer, kept to measure against; displacements only)", "", o->gather, &o->gather, nullptr));

@@ -2,6 +2,7 @@
 #pragma once
 #include "network/assembly.hpp"
 #include "network/fields.hpp"
+#include "io/joint_table.hpp"
 #include "nastran/model.hpp"
 
 #include <set>
@@ -62,7 +63,6 @@ PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], PetscBo
 struct FieldsOptions {
   PetscBool fields  = PETSC_TRUE;  // -output_fields
   PetscBool results = PETSC_TRUE;  // -output_stresses: element resultants, strains and stresses
-  PetscBool joints_hdf5 = PETSC_FALSE; // -output_joints_hdf5: the joints.csv table per step in fields.h5
   PetscBool gather  = PETSC_FALSE; // -output_fields_gather: the writer that gathers to rank 0
   PetscReal bypass_width = 0;      // -output_bypass_width (mm); 0: 6 -coupling_radius (3 diameters)
 };
@@ -82,8 +82,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
 // Rank 0 only: the same from the fields gathered to rank 0 (io/fields_gather.cpp).
 PetscErrorCode FieldsWriteStepGather(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
 PetscErrorCode FieldsClose(FieldsFile *ff);
-// Reads -output_fields, -output_stresses, -output_joints_hdf5, -output_bypass_width,
-// -output_fields_gather (inside the
+// Reads -output_fields, -output_stresses, -output_bypass_width, -output_fields_gather (inside the
 // caller's PetscOptionsBegin/End, so that -help lists them).
 PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o);
 // The group of fields.h5 that holds a step's fields ("/steps/000012"): a restart drops those after
@@ -93,11 +92,14 @@ std::string FieldsStepGroup(PetscInt step);
 // The header line of joints.csv (docs/output.md).
 constexpr const char *kJointsHeader = "step,load,joint,state,du_n,du_t1,du_t2,f_n,f_t1,f_t2,bearing,slip_t1,slip_t2";
 
-// Results, written by rank 0 under dir.
+// Results under dir: joints.csv (rank 0, from the records gathered to it) and/or joints.h5 (every
+// rank its rows: io/joint_table.hpp), as -output_joints chooses; summary.json (rank 0); the fields.
 struct Output {
   std::string dir;
   std::string scene;
-  FILE       *csv = nullptr;
+  JointFiles  files;            // which joint files (OutputOpen decides)
+  FILE       *csv = nullptr;    // joints.csv, rank 0
+  JointTable  table;            // joints.h5
   // Most loaded joint: largest in-plane force magnitude over all joints and steps.
   PetscInt  most_joint = -1, most_step = 0;
   PetscReal most_force = -1, most_load = 0;
@@ -108,7 +110,7 @@ struct Output {
 };
 // The fields are written only when fields.fields is true and the assembly has a shell patch (a
 // rigid-only scene has no field to show).
-PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out);
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, const JointOutputOptions &joints, BoltnetAssembly a, Output *out);
 PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out);
 PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &status, const std::string &message);
 // Collective: rank 0's error closing joints.csv is every rank's.

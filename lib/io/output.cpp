@@ -1,9 +1,10 @@
-// Results: joints.csv (one row per joint per converged step), summary.json and the fields
-// (io/fields.cpp), written by rank 0.
+// Results: joints.csv (one row per joint per converged step, written by rank 0) and/or joints.h5
+// (io/joint_table.cpp, every rank its rows), summary.json (rank 0) and the fields (io/fields.cpp).
 #include "io/io.hpp"
 #include "core/errors.hpp"
 #include "core/log.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -76,6 +77,28 @@ std::string Why(const std::string &path)
   return "Cannot write " + path + ": " + std::strerror(errno);
 }
 
+// The most loaded joint of the step (largest in-plane force, the smallest id among equals) from each
+// rank's own records, kept when it is more loaded than every earlier step's: two reductions, no
+// gather.
+PetscErrorCode MostLoaded(BoltnetAssembly a, const StepInfo &info, const std::vector<JointRecord> &mine, Output *out)
+{
+  PetscReal most = -1, gmost;
+  PetscInt  joint = PETSC_MAX_INT, gjoint;
+  PetscFunctionBeginUser;
+  for (const JointRecord &r : mine) most = std::max(most, std::hypot(r.force[1], r.force[2]));
+  PetscCall(MPIU_Allreduce(&most, &gmost, 1, MPIU_REAL, MPIU_MAX, a->comm));
+  for (const JointRecord &r : mine)
+    if (std::hypot(r.force[1], r.force[2]) == gmost) joint = std::min(joint, r.joint);
+  PetscCall(MPIU_Allreduce(&joint, &gjoint, 1, MPIU_INT, MPI_MIN, a->comm));
+  if (gjoint != PETSC_MAX_INT && gmost > out->most_force) {
+    out->most_force = gmost;
+    out->most_joint = gjoint;
+    out->most_step  = info.step;
+    out->most_load  = info.load;
+  }
+  PetscFunctionReturn(0);
+}
+
 std::string FieldsError(const Output *out, const StepInfo &info, const ErrorLog &log)
 {
   return "Cannot write the fields of step " + std::to_string(info.step) + " in " + out->dir + "/fields.h5 or its xdmf files (-output_fields false turns them off): " + ErrorText(log);
@@ -103,7 +126,7 @@ std::string WriteFileWhole(const std::string &path, const std::string &text)
   return e;
 }
 
-PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out)
+PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, const JointOutputOptions &joints, BoltnetAssembly a, Output *out)
 {
   PetscMPIInt rank;
   int         ok = 1;
@@ -112,6 +135,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
+  out->files    = JointFilesFor(joints, a->layout.joints.size());
   out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
@@ -127,22 +151,37 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   if (rank == 0) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
-    // A summary left by an earlier run must not look like this run's result.
-    std::filesystem::remove(dir + "/summary.json", ec);
-    std::filesystem::remove(dir + "/fields.xdmf", ec);
-    std::filesystem::remove(dir + "/joints.xdmf", ec);
-    std::filesystem::remove(dir + "/bypass.csv", ec);
-    std::filesystem::remove(dir + "/fields.h5", ec);
-    out->csv = std::fopen((dir + "/joints.csv").c_str(), "w");
-    ok       = out->csv ? 1 : 0;
-    if (ok) {
-      errno = 0;
-      if (std::fprintf(out->csv, "%s\n", kJointsHeader) < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
-    }
+    // The directory must take new files before an earlier run's are removed: a run that cannot
+    // write leaves them as they were.
+    const std::string probe = dir + "/.boltnet-write-test";
+    FILE             *f     = std::fopen(probe.c_str(), "w");
+    ok                      = f ? 1 : 0;
+    if (f) std::fclose(f);
+    std::filesystem::remove(probe, ec);
   }
   PetscCallMPI(MPI_Bcast(&ok, 1, MPI_INT, 0, comm));
   PetscCheck(ok, comm, PETSC_ERR_FILE_OPEN, "Cannot write results in the output directory '%s' (-output_dir)", dir.c_str());
+  if (rank == 0) {
+    std::error_code ec;
+    // A summary left by an earlier run must not look like this run's result, nor a joint file of
+    // the kind this run does not write (those it writes are truncated when opened).
+    for (const char *name : {"summary.json", "fields.xdmf", "joints.xdmf", "bypass.csv", "fields.h5"}) std::filesystem::remove(dir + "/" + name, ec);
+    if (!out->files.csv) std::filesystem::remove(dir + "/joints.csv", ec);
+    if (!out->files.hdf5) std::filesystem::remove(dir + "/joints.h5", ec);
+    if (out->files.csv) {
+      errno    = 0;
+      out->csv = std::fopen((dir + "/joints.csv").c_str(), "w");
+      if (!out->csv || std::fprintf(out->csv, "%s\n", kJointsHeader) < 0 || std::fflush(out->csv) != 0) why = Why(dir + "/joints.csv");
+    }
+  }
   PetscCall(ShareError(comm, why));
+  if (out->files.hdf5) {
+    ErrorLog log;
+    PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
+    const PetscErrorCode ierr = JointTableCreate(a, scene, dir + "/joints.h5", &out->table);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(ShareAnyError(comm, ierr ? "Cannot write the joint table " + dir + "/joints.h5 (-output_joints): " + ErrorText(log) : ""));
+  }
   PetscFunctionReturn(0);
 }
 
@@ -176,25 +215,35 @@ PetscErrorCode OutputStep(BoltnetAssembly a, const StepInfo &info, Output *out)
     PetscCall(ShareAnyError(a->comm, ierr ? FieldsError(out, info, log) : ""));
   }
   PetscCall(PetscLogEventEnd(Events().output, 0, 0, 0, 0));
-  PetscCall(AssemblyGatherRecords(a, rec));
+  std::vector<JointRecord> mine;
+  PetscCall(AssemblyJointRecords(a, mine)); // collective: the ranks start the joint output together
+  // -log_view: the joint output's time is BoltnetJointOutput (scripts/bench-output --joints).
+  PetscCall(PetscLogEventBegin(Events().joint_output, 0, 0, 0, 0));
+  PetscCall(MostLoaded(a, info, mine, out));
+  if (out->files.hdf5) {
+    ErrorLog log;
+    PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
+    const PetscErrorCode ierr = JointTableWriteStep(a, &out->table, info, mine);
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(ShareAnyError(a->comm, ierr ? "Cannot write step " + std::to_string(info.step) + " of the joint table " + out->table.path + " (-output_joints): " + ErrorText(log) : ""));
+  }
   std::string why;
-  for (const JointRecord &r : rec) { // rank 0 has the records, the others none
-    if (!why.empty()) break;
-    errno = 0;
-    if (std::fprintf(out->csv, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", info.step, (double)info.load, r.joint, stateName(static_cast<State>(r.state)), r.jump[0], r.jump[1], r.jump[2], r.force[0], r.force[1], r.force[2], r.bearing, r.slip[0], r.slip[1]) < 0) why = Why(out->dir + "/joints.csv");
-    const PetscReal ft = std::hypot(r.force[1], r.force[2]);
-    if (ft > out->most_force) {
-      out->most_force = ft;
-      out->most_joint = r.joint;
-      out->most_step  = info.step;
-      out->most_load  = info.load;
+  if (out->files.csv) {
+    PetscCall(GatherJointRecords(a, mine, rec));
+    for (const JointRecord &r : rec) { // rank 0 has the records, the others none
+      errno = 0;
+      if (std::fprintf(out->csv, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT ",%.17g,%.17g\n", info.step, (double)info.load, r.joint, stateName(static_cast<State>(r.state)), r.jump[0], r.jump[1], r.jump[2], r.force[0], r.force[1], r.force[2], r.bearing, r.slip[0], r.slip[1]) < 0) {
+        why = Why(out->dir + "/joints.csv");
+        break;
+      }
+    }
+    // Each step is on disk (or its failure known) before the next is solved.
+    if (a->rank == 0 && why.empty()) {
+      errno = 0;
+      if (std::fflush(out->csv) != 0) why = Why(out->dir + "/joints.csv");
     }
   }
-  // Each step is on disk (or its failure known) before the next is solved.
-  if (a->rank == 0 && why.empty()) {
-    errno = 0;
-    if (std::fflush(out->csv) != 0) why = Why(out->dir + "/joints.csv");
-  }
+  PetscCall(PetscLogEventEnd(Events().joint_output, 0, 0, 0, 0));
   PetscCall(ShareError(a->comm, why));
   PetscCall(PetscLogStagePop());
   PetscFunctionReturn(0);
@@ -250,6 +299,7 @@ void OutputDiscard(Output *out)
 {
   if (out->csv) std::fclose(out->csv);
   out->csv = nullptr;
+  JointTableClose(&out->table);
   FieldsClose(&out->ff);
 }
 
@@ -260,6 +310,7 @@ PetscErrorCode OutputClose(MPI_Comm comm, Output *out)
   errno = 0;
   if (out->csv && std::fclose(out->csv) != 0) why = Why(out->dir + "/joints.csv");
   out->csv = nullptr;
+  PetscCall(JointTableClose(&out->table));
   PetscCall(FieldsClose(&out->ff));
   PetscCall(ShareError(comm, why));
   PetscFunctionReturn(0);

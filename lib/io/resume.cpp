@@ -1,6 +1,7 @@
 // The results of a run continued after a restart (io/checkpoint.hpp, OutputResume): joints.csv and
-// bypass.csv cut after the checkpoint's step, fields.h5 reopened without the steps after it. Rank 0
-// checks them before any is changed; fields.h5, written by every rank, is then reopened by every rank.
+// bypass.csv cut after the checkpoint's step, fields.h5 and joints.h5 reopened without the steps
+// after it. Rank 0 checks them before any is changed; fields.h5 and joints.h5, written by every
+// rank, are then reopened by every rank.
 #include "core/errors.hpp"
 #include "io/checkpoint_file.hpp"
 
@@ -116,7 +117,8 @@ std::string Resume(BoltnetAssembly a, Output *out)
   const PetscInt    k    = (PetscInt)a->steps.size();
   const std::string csv  = out->dir + "/joints.csv";
   std::uintmax_t    keep = 0;
-  std::string       why  = JointsLength(csv, k, a->layout.joints.size(), &keep);
+  std::string       why  = out->files.csv ? JointsLength(csv, k, a->layout.joints.size(), &keep) : "";
+  if (why.empty() && out->files.hdf5) why = JointTableCheck(a, out->dir + "/joints.h5", k);
   if (!why.empty()) return why;
   ErrorLog log;
   if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
@@ -135,10 +137,12 @@ std::string Resume(BoltnetAssembly a, Output *out)
     if (!why.empty()) return why;
   }
   std::filesystem::remove(out->dir + "/summary.json", ec); // this run writes its own at the end
-  std::filesystem::resize_file(csv, keep, ec);
-  if (ec) return "Cannot restart: cannot cut " + csv + " after step " + std::to_string(k) + ": " + ec.message();
-  out->csv = std::fopen(csv.c_str(), "a");
-  if (!out->csv) return "Cannot restart: cannot append to " + csv;
+  if (out->files.csv) {
+    std::filesystem::resize_file(csv, keep, ec);
+    if (ec) return "Cannot restart: cannot cut " + csv + " after step " + std::to_string(k) + ": " + ec.message();
+    out->csv = std::fopen(csv.c_str(), "a");
+    if (!out->csv) return "Cannot restart: cannot append to " + csv;
+  }
   if (withBypass) {
     std::filesystem::resize_file(bypass, bkeep, ec);
     if (ec) return "Cannot restart: cannot cut " + bypass + " after step " + std::to_string(k) + ": " + ec.message();
@@ -150,7 +154,7 @@ std::string Resume(BoltnetAssembly a, Output *out)
 
 } // namespace
 
-PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, BoltnetAssembly a, Output *out)
+PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::string &scene, const FieldsOptions &fields, const JointOutputOptions &joints, BoltnetAssembly a, Output *out)
 {
   PetscMPIInt rank;
   std::string why;
@@ -159,6 +163,7 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
+  out->files    = JointFilesFor(joints, a->layout.joints.size());
   out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
@@ -185,6 +190,7 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
     PetscCall(PetscViewerHDF5Open(comm, (dir + "/fields.h5").c_str(), FILE_MODE_APPEND, &out->ff.viewer));
     PetscCall(DropLaterFields(&out->ff, (PetscInt)a->steps.size()));
   }
+  if (out->files.hdf5) PetscCall(JointTableReopen(a, dir + "/joints.h5", (PetscInt)a->steps.size(), &out->table));
   PetscFunctionReturn(0);
 }
 

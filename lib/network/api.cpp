@@ -154,25 +154,28 @@ PetscErrorCode BoltnetAssemblyGetLoadFactor(BoltnetAssembly a, PetscReal *lambda
 PetscErrorCode BoltnetAssemblyGetJointResult(BoltnetAssembly a, PetscInt id, PetscReal force[6], PetscReal jump[6], BoltnetJointState *state)
 {
   JointRecord found{};
-  PetscInt    ok = 0;
+  PetscMPIInt owner, first;
   PetscFunctionBeginUser;
   BoltnetCheckPointer(a, 1, "BoltnetAssembly");
   PetscCheck(a->net.dm, a->comm, PETSC_ERR_ORDER, "%s: call BoltnetAssemblySetUp() first", __func__);
   PetscCheck(id >= 0, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "%s: argument 2 (id) = %" PetscInt_FMT " is not a joint id (ids are >= 0)", __func__, id);
+  // The rank that owns the joint finds it among its own records and sends it to all: no rank
+  // gathers the others' joints.
+  owner = a->size;
   PetscCall(Guard(__func__, [&]() -> PetscErrorCode {
-    std::vector<JointRecord> rec;
+    std::vector<JointRecord> mine;
     PetscFunctionBeginUser;
-    PetscCall(AssemblyGatherRecords(a, rec));
-    for (const JointRecord &r : rec)
+    PetscCall(AssemblyJointRecords(a, mine));
+    for (const JointRecord &r : mine)
       if (r.joint == id) {
         found = r;
-        ok    = 1;
+        owner = a->rank;
       }
     PetscFunctionReturn(0);
   }));
-  PetscCallMPI(MPI_Bcast(&ok, 1, MPIU_INT, 0, a->comm));
-  PetscCheck(ok, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "No joint with id %" PetscInt_FMT, id);
-  PetscCallMPI(MPI_Bcast(&found, sizeof(JointRecord), MPI_BYTE, 0, a->comm));
+  PetscCallMPI(MPI_Allreduce(&owner, &first, 1, MPI_INT, MPI_MIN, a->comm));
+  PetscCheck(first < a->size, a->comm, PETSC_ERR_ARG_OUTOFRANGE, "No joint with id %" PetscInt_FMT, id);
+  PetscCallMPI(MPI_Bcast(&found, sizeof(JointRecord), MPI_BYTE, first, a->comm));
   for (int i = 0; i < 6; ++i) {
     if (force) force[i] = found.force[i];
     if (jump) jump[i] = found.jump[i];

@@ -113,7 +113,7 @@ struct PathPosition {
   PetscInt  halved   = 0;
 };
 
-// One row of results for one joint at one converged step (gathered to rank 0 for output).
+// One row of results for one joint at one converged step (joints.csv, joints.h5).
 struct JointRecord {
   PetscInt  joint; // user id
   PetscInt  state; // State
@@ -208,7 +208,12 @@ PetscErrorCode AssemblyCountStateChanges(SNES snes, Vec ref, Vec X, PetscInt *nc
 PetscErrorCode AssemblyStateCounts(BoltnetAssembly a, Vec X, PetscInt counts[5]);
 // Accept the converged point X: keep the joints' responses there, commit their trial history.
 PetscErrorCode AssemblyCommit(BoltnetAssembly a, Vec X);
-// Gather the records of every joint at the last accepted point to rank 0 (sorted by joint id).
+// Collective: the records of the joints this rank owns at the last accepted point (JointSet order).
+PetscErrorCode AssemblyJointRecords(BoltnetAssembly a, std::vector<JointRecord> &mine);
+// Collective: every rank's records gathered to rank 0 and sorted by joint id (empty elsewhere). For
+// joints.csv only (PETSc event BoltnetJointGather): joints.h5 is written without it (io/joint_table.hpp).
+PetscErrorCode GatherJointRecords(BoltnetAssembly a, const std::vector<JointRecord> &mine, std::vector<JointRecord> &records);
+// Both: the records of every joint at the last accepted point on rank 0, sorted by joint id.
 PetscErrorCode AssemblyGatherRecords(BoltnetAssembly a, std::vector<JointRecord> &records);
 // Impose the prescribed values of the constrained dof at load factor lambda on X.
 PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda);

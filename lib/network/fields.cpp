@@ -35,7 +35,19 @@ void ElementsOf(const ShellPatch &sp, F &&f)
     if (el.node[0] >= 0) f(el.elem, el.node, el.part_node, el.geom);
 }
 
-PetscErrorCode FinishSpace(MPI_Comm comm, FieldSpace &s)
+PetscErrorCode CreateVec(MPI_Comm comm, PetscInt n, PetscInt N, PetscInt bs, Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreate(comm, v));
+  PetscCall(VecSetSizes(*v, bs * n, bs * N));
+  PetscCall(VecSetBlockSize(*v, bs));
+  PetscCall(VecSetType(*v, VECSTANDARD));
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode FieldSpaceSetUp(MPI_Comm comm, FieldSpace &s)
 {
   PetscFunctionBeginUser;
   s.nlocal = (PetscInt)s.natural.size();
@@ -48,17 +60,15 @@ PetscErrorCode FinishSpace(MPI_Comm comm, FieldSpace &s)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode CreateVec(MPI_Comm comm, PetscInt n, PetscInt N, PetscInt bs, Vec *v)
+PetscErrorCode FieldSpaceDestroy(FieldSpace &s)
 {
   PetscFunctionBeginUser;
-  PetscCall(VecCreate(comm, v));
-  PetscCall(VecSetSizes(*v, bs * n, bs * N));
-  PetscCall(VecSetBlockSize(*v, bs));
-  PetscCall(VecSetType(*v, VECSTANDARD));
+  for (auto &kv : s.scatter) PetscCall(VecScatterDestroy(&kv.second));
+  for (auto &kv : s.vecs)
+    for (Vec &v : kv.second) PetscCall(VecDestroy(&v));
+  s = FieldSpace{};
   PetscFunctionReturn(0);
 }
-
-} // namespace
 
 PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
 {
@@ -107,9 +117,9 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
     });
   }
   for (size_t k = 0; k < a->joints.size(); ++k) m->joints.natural.push_back(a->joints.comp[k].index);
-  PetscCall(FinishSpace(comm, m->nodes));
-  PetscCall(FinishSpace(comm, m->elems));
-  PetscCall(FinishSpace(comm, m->joints));
+  PetscCall(FieldSpaceSetUp(comm, m->nodes));
+  PetscCall(FieldSpaceSetUp(comm, m->elems));
+  PetscCall(FieldSpaceSetUp(comm, m->joints));
   PetscInt tri = 0;
   for (const FieldElement &e : m->elements) tri += e.nn == 3;
   PetscCall(MPIU_Allreduce(&tri, &m->ntriangles, 1, MPIU_INT, MPI_SUM, comm));
@@ -136,11 +146,7 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
 PetscErrorCode FieldMapDestroy(FieldMap *m)
 {
   PetscFunctionBeginUser;
-  for (FieldSpace *s : {&m->nodes, &m->elems, &m->joints}) {
-    for (auto &kv : s->scatter) PetscCall(VecScatterDestroy(&kv.second));
-    for (auto &kv : s->vecs)
-      for (Vec &v : kv.second) PetscCall(VecDestroy(&v));
-  }
+  for (FieldSpace *s : {&m->nodes, &m->elems, &m->joints}) PetscCall(FieldSpaceDestroy(*s));
   PetscCall(VecScatterDestroy(&m->ghost_scatter));
   PetscCall(VecDestroy(&m->ghost_dof));
   PetscCall(VecScatterDestroy(&m->bypass_scatter));

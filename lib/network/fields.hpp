@@ -27,6 +27,10 @@ struct FieldSpace {
   std::map<PetscInt, VecScatter> scatter;                            // owned -> natural, by block size
   std::map<PetscInt, std::array<Vec, 2>> vecs;                       // (owned, natural), by block size
 };
+// Collective: nlocal, start and nglobal from natural (filled by the caller).
+PetscErrorCode FieldSpaceSetUp(MPI_Comm comm, FieldSpace &s);
+// Its scatters and Vecs destroyed; s emptied.
+PetscErrorCode FieldSpaceDestroy(FieldSpace &s);
 
 // An element this rank writes (network/fields.cpp ElementsOf: the only code that enumerates them).
 // XDMF cell type codes: 5 quadrilateral (nn = 4), 4 triangle (nn = 3).
