@@ -77,6 +77,11 @@ PetscErrorCode SetFromOptions(BoltnetAssembly a)
   PetscInt         t          = static_cast<PetscInt>(o.tangent);
   PetscInt         ct         = static_cast<PetscInt>(o.coupling_type);
   PetscFunctionBeginUser;
+  // -patch_condense: auto, or one of PETSc's boolean words for every patch or none.
+  const char *condense_names[] = {"false", "true", "auto"};
+  char        condense[16];
+  PetscBool   condense_set = PETSC_FALSE;
+  PetscCall(PetscStrncpy(condense, condense_names[static_cast<int>(o.condense)], sizeof condense));
   // No C++ allocation here: PETSc's options only.
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet solver options", "boltnet");
   PetscCall(PetscOptionsEList("-joint_tangent", "Joint tangent in the Jacobian: the paper's state-switched one or the consistent one", "BoltnetAssemblySetFromOptions", tangents, 2, tangents[t], &t, nullptr));
@@ -84,7 +89,8 @@ PetscErrorCode SetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsEList("-coupling_type", "How a joint attaches to a shell patch: its footprint tied rigidly to the joint node by penalty links, or eliminated exactly (rigid-body slaves), or the joint on the nearest mesh node (no footprint)", "BoltnetAssemblySetFromOptions", kCouplingTypeNames, 3, kCouplingTypeNames[ct], &ct, nullptr));
   PetscCall(PetscOptionsReal("-coupling_radius", "Footprint radius of a fastener on a shell patch (mm): nodes within it follow the joint node rigidly", "BoltnetAssemblySetFromOptions", o.coupling_radius, &o.coupling_radius, nullptr));
   PetscCall(PetscOptionsReal("-coupling_reach", "How far along its axis a fastener reaches for the sheet it attaches to (mm); the footprint is taken on the nearest sheet within it (0: 4 x -coupling_radius)", "BoltnetAssemblySetFromOptions", o.coupling_reach, &o.coupling_reach, nullptr));
-  PetscCall(PetscOptionsBool("-patch_condense", "Condense each shell patch onto its ports (joint nodes and seam nodes) once per analysis, so that Newton iterates on the interface only; false keeps every node in the global system (docs/solver.md)", "BoltnetAssemblySetFromOptions", o.condense, &o.condense, nullptr));
+  PetscCall(PetscOptionsString("-patch_condense", "Condense shell patches onto their ports (joint nodes and seam nodes) once per analysis, so that Newton iterates on the interface only: auto (each patch whose port dof are at most -patch_condense_ratio times the square root of its dof), true (every patch) or false (none: every node in the global system); docs/solver.md", "BoltnetAssemblySetFromOptions", condense, condense, sizeof condense, &condense_set));
+  PetscCall(PetscOptionsReal("-patch_condense_ratio", "With -patch_condense auto: condense a shell patch when its port dof are at most this many times the square root of its dof, where its dense port block costs less than its sparse factorisation (docs/solver.md, \"Which patches are condensed\")", "BoltnetAssemblySetFromOptions", o.condense_ratio, &o.condense_ratio, nullptr));
   PetscCall(PetscOptionsBool("-interface_near_null_space", "Give the Jacobian the six rigid-body modes of its nodes (three translations, three rotations) as near-null space (MatSetNearNullSpace), which GAMG and BoomerAMG use to build their coarse spaces; LU ignores it (docs/solver.md)", "BoltnetAssemblySetFromOptions", o.near_null_space, &o.near_null_space, nullptr));
   PetscCall(PetscOptionsInt("-patch_max_nodes", "Largest shell patch in nodes: a larger part is cut by METIS into patches joined by seam edges (0: never cut; -1: automatic: no cut on one rank; on several, about four patches per rank when condensed (none below 64 nodes), eight when kept whole (none below 32); docs/solver.md)", "BoltnetAssemblySetFromOptions", o.patch_max_nodes, &o.patch_max_nodes, nullptr));
   PetscCall(PetscOptionsBool("-patch_balance", "Distribute the patches over the ranks by dof with METIS (false: PETSc's partitioner, by edge count)", "BoltnetAssemblySetFromOptions", o.balance, &o.balance, nullptr));
@@ -95,6 +101,19 @@ PetscErrorCode SetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsBool("-load_progress", "Print one line per converged load step: the nominal step of the path reached (and the part of it, after cut-backs), load factor, Newton iterations, joints sticking, sliding and bearing (summed over ranks), elapsed time and an estimate of the time left (docs/scenes.md)", "BoltnetAssemblySolveLoadPath", o.progress, &o.progress, nullptr));
   PetscCall(PetscOptionsBool("-joint_monitor", "Print, per Newton iteration, the joints in each state and how many changed (summed over ranks)", "BoltnetAssemblySetFromOptions", o.monitor_states, &o.monitor_states, nullptr));
   PetscOptionsEnd();
+  if (condense_set) {
+    // PetscOptionsStringToBool's words, compared here so that a wrong one gets one line.
+    const char *words[] = {"auto", "true", "yes", "on", "1", "false", "no", "off", "0"};
+    int         w       = -1;
+    for (int k = 0; k < 9 && w < 0; ++k) {
+      PetscBool eq;
+      PetscCall(PetscStrcasecmp(condense, words[k], &eq));
+      if (eq) w = k;
+    }
+    PetscCheck(w >= 0, a->comm, PETSC_ERR_USER_INPUT, "-patch_condense %s: expected auto, true or false", condense);
+    o.condense = w == 0 ? Condense::Auto : w <= 4 ? Condense::All : Condense::None;
+  }
+  PetscCheck(o.condense_ratio >= 0, a->comm, PETSC_ERR_USER_INPUT, "-patch_condense_ratio %g must be >= 0", (double)o.condense_ratio);
   PetscCheck(o.coupling_radius > 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_radius %g must be > 0", (double)o.coupling_radius);
   PetscCheck(o.coupling_reach >= 0, a->comm, PETSC_ERR_USER_INPUT, "-coupling_reach %g must be >= 0 (0: automatic)", (double)o.coupling_reach);
   PetscCheck(o.patch_max_nodes >= -1, a->comm, PETSC_ERR_USER_INPUT, "-patch_max_nodes %" PetscInt_FMT " must be -1 (automatic), 0 (never cut) or a positive node count", o.patch_max_nodes);

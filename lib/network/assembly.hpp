@@ -36,8 +36,10 @@ struct AssemblyOptions {
   // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
   PetscBool    stuck_linear = PETSC_TRUE;
   PetscReal    stuck_margin = 0.3; // freeze a joint whose predicted utilization stays below this
-  // Patches: condensed onto their ports, or kept whole (docs/solver.md, "Condensed patches").
-  PetscBool    condense = PETSC_TRUE;
+  // Patches: condensed onto their ports, or kept whole (docs/solver.md, "Condensed patches"):
+  // every one, none, or each where its dense port block is cheaper (patch/layout.hpp).
+  Condense     condense       = Condense::Auto;
+  PetscReal    condense_ratio = 8;
   // The six rigid-body modes of the nodes as the Jacobian's near-null space (MatSetNearNullSpace),
   // for algebraic multigrid (docs/solver.md, "Iterative solvers"); LU ignores it.
   PetscBool    near_null_space = PETSC_TRUE;
@@ -63,6 +65,7 @@ struct Network {
   PetscInt              keyPatch = -1, keyJoint = -1, keySeam = -1; // component keys
   std::vector<PetscInt> sedges;          // local edge points that are seams
   PetscInt              ndof_global = 0; // the network's dof (the interface's when condensed)
+  PetscInt              ncondensed  = 0; // shell patches condensed onto their ports (every rank knows)
   PetscInt              ndof_model  = 0; // every dof of the model (patches kept whole)
   PetscReal             dof_imbalance = 1; // max over ranks of the owned model dof / their mean
 };
@@ -150,7 +153,7 @@ struct _p_BoltnetAssembly {
   // Pfac, refactored when the Krylov solve takes more than refactor_its iterations or fails).
   PetscBool lagged       = PETSC_FALSE;
   PetscInt  refactor_its = 25;
-  Mat       Pfac         = nullptr;
+  Mat       Pfac         = nullptr; // created by AssemblySetUpSolver for the lagged solve only
   PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian

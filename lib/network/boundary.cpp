@@ -23,7 +23,7 @@ PetscErrorCode AssemblySetUpBoundary(BoltnetAssembly a)
       for (const auto &kv : loads.force) f2 += kv.second * kv.second;
       // The row of a patch dof, or -1 when a condensed patch keeps it inside (an interior dof).
       auto row = [&](PetscInt dof) -> PetscInt {
-        if (!sp || !a->opt.condense) return op.goff + dof;
+        if (!sp || !sp->condensed) return op.goff + dof;
         auto it = sp->carried_index.find((int)(dof / 6));
         return it == sp->carried_index.end() ? -1 : op.goff + 6 * it->second + dof % 6;
       };
@@ -67,7 +67,7 @@ PetscErrorCode AssemblyPatchDisplacement(BoltnetAssembly a, const OwnedPatch &op
     PetscFunctionReturn(0);
   }
   const ShellPatch &sp = a->layout.shells.at(op.index);
-  if (!a->opt.condense) {
+  if (!sp.condensed) {
     u.assign(xlocal + op.loff, xlocal + op.loff + 6 * sp.nnodes());
     PetscFunctionReturn(0);
   }

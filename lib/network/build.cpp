@@ -23,7 +23,8 @@ long AutomaticPatchSize(BoltnetAssembly a)
   PetscInt total = 0;
   for (const auto &kv : a->model.shells) total += (PetscInt)kv.second.mesh.x.size();
   if (a->size == 1) return 0;
-  const long per_rank = a->opt.condense ? 4 : 8, smallest = a->opt.condense ? 64 : 32;
+  const bool condense = a->opt.condense != Condense::None;
+  const long per_rank = condense ? 4 : 8, smallest = condense ? 64 : 32;
   return std::max<long>(smallest, (total + per_rank * a->size - 1) / (per_rank * a->size));
 }
 
@@ -146,7 +147,7 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
       if (!op.shell) continue;
       const ShellPatch &sp      = a->layout.shells.at(op.index);
       const double      penalty = penalty_factor * sp.material.A[0];
-      if (!a->opt.condense) {
+      if (!sp.condensed) {
         op.op = BuildShellOperator(sp, a->opt.coupling_type, penalty, a->opt.coupling_radius);
         continue;
       }
@@ -194,6 +195,7 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   lo.reach     = a->opt.coupling_reach;
   lo.max_nodes = a->opt.patch_max_nodes < 0 ? AutomaticPatchSize(a) : a->opt.patch_max_nodes;
   lo.condense  = a->opt.condense;
+  lo.condense_ratio = a->opt.condense_ratio;
   lo.directors = a->opt.shell_directors;
   a->net.ndof_model = 0;
   for (const PartDesc &p : a->model.parts) {
@@ -201,7 +203,11 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
     a->net.ndof_model += 6 * (sh == a->model.shells.end() ? 1 : (PetscInt)sh->second.mesh.x.size());
   }
   PetscCall(LayoutCreate(a->comm, a->model, lo, &a->layout));
-  for (const auto &kv : a->layout.shells) a->net.ndof_model += 6 * (PetscInt)kv.second.joint_nodes.size();
+  a->net.ncondensed = 0;
+  for (const auto &kv : a->layout.shells) {
+    a->net.ndof_model += 6 * (PetscInt)kv.second.joint_nodes.size();
+    a->net.ncondensed += kv.second.condensed;
+  }
   PetscCall(PetscLogEventEnd(Events().layout, 0, 0, 0, 0));
 
   PetscCall(PetscLogEventBegin(Events().network, 0, 0, 0, 0));

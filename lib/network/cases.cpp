@@ -53,12 +53,12 @@ PetscErrorCode AssemblySetLoads(BoltnetAssembly a, const std::vector<BCDesc> &bc
   const std::vector<PetscInt> held = a->bc.dirichlet_rows;
   a->model.bcs                     = bcs;
   // The condensed patches: new load terms from their kept factorisations.
-  if (a->opt.condense)
-    PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
+  PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
       PetscFunctionBeginUser;
       for (OwnedPatch &op : a->patches.owned) {
         if (!op.shell) continue;
         const ShellPatch &sp = a->layout.shells.at(op.index);
+        if (!sp.condensed) continue;
         PatchLoads        loads;
         PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, &loads));
         PetscCall(CondensedPatchLoads(sp.id, loads, &op.cond));

@@ -60,7 +60,7 @@ PetscErrorCode AddPatchBlocks(BoltnetAssembly a, Mat M, bool values)
   std::vector<PetscScalar> z;
   for (const OwnedPatch &op : a->patches.owned) {
     if (!op.shell) continue;
-    if (a->opt.condense) {
+    if (a->layout.shells.at(op.index).condensed) {
       const PetscInt nb = op.cond.nb;
       cols.resize(nb);
       for (PetscInt i = 0; i < nb; ++i) cols[i] = op.goff + i;
@@ -220,8 +220,6 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscCall(MatAssemblyBegin(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatDuplicate(a->J, MAT_COPY_VALUES, &a->Jbase));
-  PetscCall(MatDuplicate(a->J, MAT_DO_NOT_COPY_VALUES, &a->Pfac));
-  PetscCall(MatSetOption(a->Pfac, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
   if (a->opt.near_null_space) PetscCall(SetRigidBodyModes(a));
   PetscFunctionReturn(0);
 }

@@ -98,7 +98,7 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   }
   for (const OwnedPatch &op : a->patches.owned) { // the owned shell patches' internal forces
     if (!op.shell) continue;
-    if (a->opt.condense) { // S u_B + lambda c
+    if (a->layout.shells.at(op.index).condensed) { // S u_B + lambda c
       const PetscInt nb = op.cond.nb;
       for (PetscInt r = 0; r < nb; ++r) {
         const double *Sr  = op.cond.S.data() + (size_t)r * nb;

@@ -5,6 +5,7 @@
 #include "mesh/search.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <set>
@@ -240,25 +241,30 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
   L->cut_parts[part.id] = std::move(part.mesh);
 }
 
-// The nodes each shell vertex carries: all of them, or its ports (joint nodes, attachment nodes of
-// node-coupled joints, nodes in elements shared with another patch), in increasing node order.
-void Carry(Layout *L, bool condense)
+// The nodes each shell vertex carries: all of them, or, for a condensed patch, its ports (joint
+// nodes, attachment nodes of node-coupled joints, nodes in elements shared with another patch), in
+// increasing node order. Which patches are condensed: o.condense.
+void Carry(Layout *L, const LayoutOptions &o)
 {
   std::map<PetscInt, std::set<int>> ports;
-  if (condense) {
-    for (const JointComp &j : L->joints) {
-      if (L->shells.count(j.va)) ports[j.va].insert((int)j.pnode_a);
-      if (L->shells.count(j.vb)) ports[j.vb].insert((int)j.pnode_b);
-    }
-    for (const auto &[pos, sp] : L->shells)
-      for (const auto &el : sp.shared)
-        for (int k = 0; k < 4; ++k)
-          if (el.node[k] >= 0) ports[pos].insert(el.node[k]);
+  for (const JointComp &j : L->joints) {
+    if (L->shells.count(j.va)) ports[j.va].insert((int)j.pnode_a);
+    if (L->shells.count(j.vb)) ports[j.vb].insert((int)j.pnode_b);
   }
+  for (const auto &[pos, sp] : L->shells)
+    for (const auto &el : sp.shared)
+      for (int k = 0; k < 4; ++k)
+        if (el.node[k] >= 0) ports[pos].insert(el.node[k]);
   for (auto &[pos, sp] : L->shells) {
+    const std::set<int> &pp = ports[pos];
+    switch (o.condense) {
+    case Condense::None: sp.condensed = false; break;
+    case Condense::All: sp.condensed = true; break;
+    case Condense::Auto: sp.condensed = CondensePatchPays(6 * (PetscInt)pp.size(), 6 * sp.nnodes(), o.condense_ratio); break;
+    }
     sp.carried.clear();
     sp.carried_index.clear();
-    if (condense) sp.carried.assign(ports[pos].begin(), ports[pos].end());
+    if (sp.condensed) sp.carried.assign(pp.begin(), pp.end());
     else
       for (int v = 0; v < sp.nnodes(); ++v) sp.carried.push_back(v);
     for (size_t i = 0; i < sp.carried.size(); ++i) sp.carried_index[sp.carried[i]] = (int)i;
@@ -345,8 +351,13 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     }
     L->joints.push_back(j);
   }
-  Carry(L, o.condense);
+  Carry(L, o);
   PetscFunctionReturn(0);
+}
+
+bool CondensePatchPays(PetscInt nb, PetscInt n, double ratio)
+{
+  return (double)nb <= ratio * std::sqrt((double)n);
 }
 
 std::vector<PetscInt> LayoutEdgeList(const Layout &L)

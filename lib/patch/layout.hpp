@@ -45,12 +45,24 @@ struct SeamComp {
   PetscInt part;  // user id of the part
 };
 
+// Which shell patches are condensed onto their ports: none, all, or those whose ports are few
+// enough for their dense block to be cheaper than keeping the patch whole (CondensePatchPays).
+enum class Condense { None, All, Auto };
+
+// The automatic choice. A patch of n dof with nb port dof, condensed, puts a dense nb x nb block on
+// the interface, whose factorisation costs nb^3/3 per Newton iteration and nb^2 memory; kept whole,
+// its sparse 2D factorisation costs about (c sqrt(n))^3 (nested dissection: the top separator's
+// front dominates). Condensing pays while nb <= ratio sqrt(n); the default ratio is measured in
+// docs/solver.md ("Which patches are condensed").
+bool CondensePatchPays(PetscInt nb, PetscInt n, double ratio);
+
 struct LayoutOptions {
   CouplingType coupling  = CouplingType::Exact;
   double       radius    = 4.0; // footprint radius (mm)
   double       reach     = 0;   // footprint reach along the fastener axis (mm); 0: 4 radius
   long         max_nodes = 0;   // largest patch in nodes (0: no cut)
-  bool         condense  = false; // vertices carry the ports only
+  Condense     condense  = Condense::None; // which vertices carry their ports only
+  double       condense_ratio = 8;       // Condense::Auto: ports per sqrt(patch dof)
   bool         directors = true;  // curved parts: the elements share the mesh's nodal directors
 };
 

@@ -63,6 +63,9 @@ struct ShellPatch {
   std::vector<int> part_node;
   // Number in the whole part of each element of mesh.elems (empty: the patch is the whole part).
   std::vector<int> part_elem;
+  // Whether the patch is condensed onto its ports (patch/condense.hpp) or kept whole; the layout
+  // decides it per patch (LayoutOptions::condense).
+  bool condensed = false;
   // The nodes the network vertex carries, in order: every node (mesh, then joint nodes) when the
   // patch is kept whole, its ports (the joint nodes and the nodes a seam touches) when condensed.
   std::vector<int> carried;

@@ -114,7 +114,7 @@ PetscErrorCode DescribeMechanism(BoltnetAssembly a, Vec z, std::string &msg)
     for (PetscInt d = 0; d < kNodeDof; ++d) mask |= dof[d] ? (1 << d) : 0;
     // A condensed shell patch carries its ports only: the null vector says which of its dof move,
     // not how many of its nodes (-1 below).
-    const bool ports_only = a->opt.condense && op.shell;
+    const bool ports_only = op.shell && a->layout.shells.at(op.index).condensed;
     patches << p.id << " " << mask << " " << (ports_only ? -1 : nodes) << "\n"; // merged over ranks and cut patches below
   }
   PetscCall(VecRestoreArrayRead(z, &zz));

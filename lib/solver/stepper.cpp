@@ -33,6 +33,10 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscOptionsEnd();
   PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
   a->lagged = isolve == 1 ? PETSC_TRUE : PETSC_FALSE;
+  if (a->lagged && !a->Pfac) { // the lagged solve's own matrix; the direct solve factors J itself
+    PetscCall(MatDuplicate(a->J, MAT_DO_NOT_COPY_VALUES, &a->Pfac));
+    PetscCall(MatSetOption(a->Pfac, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  }
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
   PetscCall(SNESSetDM(a->snes, a->net.dm));
