@@ -49,6 +49,40 @@ foreach(scene fig3a fig3b lap_rows double_lap plate_grid_small)
   endforeach()
 endforeach()
 
+# Some patches condensed, the others kept whole (-patch_condense auto, patch/layout.hpp): the same
+# joints.csv as the whole model's 1-rank run. lap-rows' patches have 6 to 24 port dof over about
+# 3,200 dof (ports per square root of dof 0.11 to 0.43): ratio 0.3 condenses the 4 plates of its
+# one- and two-fastener laps and keeps the 4 of its three- and four-fastener laps whole. The small
+# plate grid cut on 2 and 3 ranks has seams between patches whose ratios lie around 4: 4.0 condenses
+# 3 of its 12 patches and keeps 9 whole, with both kinds on either side of the same seams.
+foreach(ranks 1 2 3)
+  boltnet_run(lap_rows_mixed ${ranks} ${BOLTNET_SCENES}/lap-rows.yaml -patch_condense_ratio 0.3)
+  add_test(NAME lap_rows_mixed_np${ranks}_vs_whole
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/lap_rows_whole_np1/joints.csv ${BOLTNET_OUT}/lap_rows_mixed_np${ranks}/joints.csv 1e-8)
+  set_tests_properties(lap_rows_mixed_np${ranks}_vs_whole PROPERTIES FIXTURES_REQUIRED "lap_rows_whole_np1;lap_rows_mixed_np${ranks}")
+endforeach()
+foreach(ranks 2 3)
+  boltnet_run(plate_grid_small_mixed ${ranks} ${BOLTNET_OUT}/grid/small.yaml -patch_condense_ratio 4.0)
+  set_tests_properties(run_plate_grid_small_mixed_np${ranks} PROPERTIES FIXTURES_REQUIRED grid_scene)
+  add_test(NAME plate_grid_small_mixed_np${ranks}_vs_whole
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_small_whole_np1/joints.csv ${BOLTNET_OUT}/plate_grid_small_mixed_np${ranks}/joints.csv 1e-8)
+  set_tests_properties(plate_grid_small_mixed_np${ranks}_vs_whole PROPERTIES FIXTURES_REQUIRED "plate_grid_small_whole_np1;plate_grid_small_mixed_np${ranks}")
+endforeach()
+# The rule itself, counted from the ports: lap-rows' plates with at most 0.3 sqrt(dof) port dof are
+# those of its first two laps (6 and 12 port dof over about 3,200 dof; 0.3 sqrt(3,200) = 17), 4 of 8;
+# the 3-rank grid's patches at ratio 4.0 are mixed (both kinds present).
+add_test(NAME lap_rows_mixed_counts
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['condensed_patches'], 'of', s['patches'], 'patches condensed'); sys.exit(0 if s['condensed_patches'] == 4 and s['patches'] == 8 else 1)"
+          ${BOLTNET_OUT}/lap_rows_mixed_np1/summary.json)
+set_tests_properties(lap_rows_mixed_counts PROPERTIES FIXTURES_REQUIRED lap_rows_mixed_np1)
+add_test(NAME plate_grid_small_mixed_counts
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['condensed_patches'], 'of', s['patches'], 'patches condensed'); sys.exit(0 if 0 < s['condensed_patches'] < s['patches'] else 1)"
+          ${BOLTNET_OUT}/plate_grid_small_mixed_np3/summary.json)
+set_tests_properties(plate_grid_small_mixed_counts PROPERTIES FIXTURES_REQUIRED plate_grid_small_mixed_np3)
+# A value -patch_condense does not know is named.
+boltnet_expect(patch_condense_bad_value 1 --fail --match "patch_condense maybe: expected auto, true or false"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/condense_bad -patch_condense maybe)
+
 # The lagged interface solve (GMRES preconditioned by an earlier factorisation) solves the same
 # Newton steps as the direct one: the same joints.csv to 1e-8 (GMRES stops at 1e-10 of the residual)
 # on fig3b (contact, bearing in turn, cut patches on 2 ranks), on the frictional chain and on a small
