@@ -76,8 +76,8 @@ struct OwnedPatch {
   PetscInt       index = -1; // position in the layout's patches
   PetscInt       goff = 0, loff = 0; // offsets of its dof in the global and the local vector
   bool           shell = false;
-  PatchOperator  op;   // kept whole: the operator over every node
-  CondensedPatch cond; // condensed: the operator on the ports
+  PatchOperator  op;   // kept whole: the operator over every node (until it is in Jbase)
+  CondensedPatch cond; // condensed: the operator on the ports (S until it is in Jbase)
 };
 
 struct PatchSet {

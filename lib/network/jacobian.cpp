@@ -220,6 +220,12 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscCall(MatAssemblyBegin(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatDuplicate(a->J, MAT_COPY_VALUES, &a->Jbase));
+  // Jbase now holds the patch operators and the condensed S: the residual multiplies by it, so the
+  // patches' own copies go (on a 5M-dof model a whole copy of the global matrix).
+  for (OwnedPatch &op : a->patches.owned) {
+    op.op = PatchOperator{};
+    std::vector<double>().swap(op.cond.S);
+  }
   if (a->opt.near_null_space) PetscCall(SetRigidBodyModes(a));
   PetscFunctionReturn(0);
 }

@@ -78,41 +78,9 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
       f[js.oa[k] + i] -= ga[i];
     }
   }
-  for (const auto &[e, Ks] : a->patches.seam_ops) { // the owned seams: the blocks between their two sides
-    const Seam *seam;
-    PetscInt    oa, ob, dofs[24];
-    PetscCall(SeamOf(a, e, &seam));
-    PetscCall(SeamOffsets(a, e, PETSC_FALSE, &oa, &ob));
-    for (size_t k = 0; k < Ks.size(); ++k) {
-      const Seam::Element &el = seam->elems[k];
-      SeamElementDofs(el, oa, ob, dofs);
-      for (int r = 0; r < 24; ++r) {
-        const int sr = el.side[r / 6];
-        if (sr < 0) continue;
-        PetscScalar sum = 0;
-        for (int c = 0; c < 24; ++c)
-          if (el.side[c / 6] == 1 - sr) sum += Ks[k][24 * r + c] * xl[dofs[c]];
-        f[dofs[r]] += sum;
-      }
-    }
-  }
-  for (const OwnedPatch &op : a->patches.owned) { // the owned shell patches' internal forces
-    if (!op.shell) continue;
-    if (a->layout.shells.at(op.index).condensed) { // S u_B + lambda c
-      const PetscInt nb = op.cond.nb;
-      for (PetscInt r = 0; r < nb; ++r) {
-        const double *Sr  = op.cond.S.data() + (size_t)r * nb;
-        PetscScalar   sum = a->lambda_target * op.cond.c[r];
-        for (PetscInt c = 0; c < nb; ++c) sum += Sr[c] * xl[op.loff + c];
-        f[op.loff + r] += sum;
-      }
-      continue;
-    }
-    for (PetscInt r = 0; r < op.op.n; ++r) { // K u
-      PetscScalar sum = 0;
-      for (PetscInt k = op.op.rowptr[r]; k < op.op.rowptr[r + 1]; ++k) sum += op.op.vals[k] * xl[op.loff + op.op.cols[k]];
-      f[op.loff + r] += sum;
-    }
+  for (const OwnedPatch &op : a->patches.owned) { // the condensed patches' load terms, lambda c
+    if (!op.shell || !a->layout.shells.at(op.index).condensed) continue;
+    for (PetscInt r = 0; r < op.cond.nb; ++r) f[op.loff + r] += a->lambda_target * op.cond.c[r];
   }
   PetscCall(RestoreLocalX(a, &Xl, &xl));
   PetscCall(VecRestoreArray(Fl, &f));
@@ -120,6 +88,9 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   PetscCall(DMLocalToGlobalBegin(a->net.dm, Fl, ADD_VALUES, F));
   PetscCall(DMLocalToGlobalEnd(a->net.dm, Fl, ADD_VALUES, F));
   PetscCall(DMRestoreLocalVector(a->net.dm, &Fl));
+  // The linear part, patches (K u, or S u_B where condensed) and seams: Jbase, which holds exactly
+  // those blocks (jacobian.cpp), so that no second copy of them is kept for the residual.
+  PetscCall(MatMultAdd(a->Jbase, X, F, F));
 
   // Applied forces, then the constrained rows: r = u - lambda * value.
   PetscInt rstart;

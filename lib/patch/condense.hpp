@@ -28,7 +28,7 @@ namespace boltnet {
 struct CondensedPatch {
   PetscInt            nb = 0;  // port dof (6 per carried node)
   PetscInt            ni = 0;  // interior dof
-  std::vector<double> S;       // nb x nb, row major
+  std::vector<double> S;       // nb x nb, row major (the network frees it once it is in its Jacobian)
   std::vector<double> c;       // nb: the load term per unit load factor
   // For the recovery of the interior.
   std::vector<PetscInt> interior; // patch dof of each interior unknown (K's rows 0..ni-1)
