@@ -55,3 +55,16 @@ foreach(ranks 1 2)
 endforeach()
 add_test(NAME lap_rows_bypass COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_np2 --ref ${BOLTNET_OUT}/lap_rows_np1)
 set_tests_properties(lap_rows_bypass PROPERTIES FIXTURES_REQUIRED "lap_rows_np1;lap_rows_np2")
+# The same bypass in fields.h5, each rank writing its own joints' rows: the strip's closed form on 1,
+# 2 and 3 ranks, and lap-rows on 3 ranks with the joint table in joints.h5, where no bypass.csv is
+# written (a model that large gets no table through rank 0), against the 1-rank run's bypass.csv.
+boltnet_run(strip_bypass 3 ${BOLTNET_TEST_SCENES}/strip-bypass.yaml -output_bypass_width 30)
+foreach(ranks 1 2 3)
+  add_test(NAME strip_bypass_h5_np${ranks} COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/strip_bypass_np${ranks} --uniform 144 --h5)
+  set_tests_properties(strip_bypass_h5_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_bypass_np${ranks})
+endforeach()
+boltnet_run(lap_rows_h5only 3 ${BOLTNET_SCENES}/lap-rows.yaml -output_joints hdf5)
+add_test(NAME lap_rows_bypass_h5 COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_h5only_np3 --h5 --ref ${BOLTNET_OUT}/lap_rows_np1)
+set_tests_properties(lap_rows_bypass_h5 PROPERTIES FIXTURES_REQUIRED "lap_rows_np1;lap_rows_h5only_np3")
+add_test(NAME lap_rows_h5only_no_bypass_csv COMMAND ${BOLTNET_PYTHON} -c "import os,sys; d=sys.argv[1]; has=os.path.exists(d + '/bypass.csv'); print('bypass.csv written' if has else 'no bypass.csv, as asked'); sys.exit(1 if has or not os.path.exists(d + '/joints.h5') else 0)" ${BOLTNET_OUT}/lap_rows_h5only_np3)
+set_tests_properties(lap_rows_h5only_no_bypass_csv PROPERTIES FIXTURES_REQUIRED lap_rows_h5only_np3)

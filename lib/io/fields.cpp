@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <map>
 #include <sstream>
 
 namespace boltnet {
@@ -299,14 +300,40 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
   PetscFunctionReturn(0);
 }
 
-// The bypass rows of every rank gathered to rank 0 (small, like joints.csv's records). Collective.
-PetscErrorCode GatherBypass(BoltnetAssembly a, FieldsFile *ff, const StepFields &f, std::vector<BypassRow> &all)
+// The bypass rows of the joints this rank owns (JointSet order, a row per side on a shell part).
+// Collective.
+PetscErrorCode OwnedBypass(BoltnetAssembly a, FieldsFile *ff, const StepFields &f, std::vector<BypassRow> &mine)
 {
-  std::vector<BypassRow> mine;
   PetscFunctionBeginUser;
   if (ff->map.bypass_width == 0) PetscCall(FieldMapBypassRegions(a, ff->map, ff->opt.bypass_width > 0 ? ff->opt.bypass_width : 6 * a->opt.coupling_radius));
   PetscCall(AssemblyBypass(a, ff->map, f, mine));
-  PetscCall(GatherToZero(a->comm, mine, all));
+  PetscFunctionReturn(0);
+}
+
+// The bypass of the step's joints into the joints group of fields.h5, every rank its own rows, in
+// the joints' natural order: per joint and side (a, b) the bypass load, flux, averaged running load
+// n_avg, the bearing load and the elements averaged; NaN (0 elements) for a side on a rigid part.
+// Collective.
+PetscErrorCode WriteBypassFields(BoltnetAssembly a, FieldsFile *ff, const std::vector<BypassRow> &mine)
+{
+  PetscFunctionBeginUser;
+  const size_t        nj = a->joints.size();
+  std::vector<double> load(2 * nj, NAN), flux(2 * nj, NAN), navg(2 * nj, NAN), bearing(2 * nj, NAN), elements(2 * nj, 0);
+  std::map<PetscInt, size_t> at; // joint id -> position in JointSet order
+  for (size_t k = 0; k < nj; ++k) at[a->joints.comp[k].id] = k;
+  for (const BypassRow &b : mine) {
+    const size_t i = 2 * at.at(b.joint) + (size_t)b.side;
+    load[i]        = b.load;
+    flux[i]        = b.flux;
+    navg[i]        = b.n_avg;
+    bearing[i]     = b.bearing;
+    elements[i]    = (double)b.elements;
+  }
+  std::vector<double> rows;
+  rows.reserve(10 * nj);
+  for (size_t k = 0; k < nj; ++k)
+    for (const auto *col : {&load, &flux, &navg, &bearing, &elements}) rows.insert(rows.end(), {(*col)[2 * k], (*col)[2 * k + 1]});
+  PetscCall(WritePacked(a->comm, ff->viewer, ff->map.joints, {{"bypass_load", 2, Column::Real}, {"bypass_flux", 2, Column::Real}, {"bypass_n_avg", 2, Column::Real}, {"bypass_bearing", 2, Column::Real}, {"bypass_elements", 2, Column::Int}}, rows));
   PetscFunctionReturn(0);
 }
 
@@ -338,7 +365,7 @@ PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5, fields.xdmf and joints.xdmf per converged step (shell displacement/rotation and element results, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", o->fields, &o->fields, nullptr));
   PetscCall(PetscOptionsBool("-output_stresses", "With the fields, the element resultants N, M, Q, surface strains and stresses of every step", "", o->results, &o->results, nullptr));
-  PetscCall(PetscOptionsReal("-output_bypass_width", "Width w (mm) of the strip whose force balance gives the bypass load in bypass.csv; 0: 6 -coupling_radius", "", o->bypass_width, &o->bypass_width, nullptr));
+  PetscCall(PetscOptionsReal("-output_bypass_width", "Width w (mm) of the strip whose force balance gives the bypass load (bypass.csv, fields.h5); 0: 6 -coupling_radius", "", o->bypass_width, &o->bypass_width, nullptr));
   PetscCheck(o->bypass_width >= 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-output_bypass_width %g: a width must be positive (or 0 for the default)", (double)o->bypass_width);
   PetscCall(PetscOptionsBool("-output_fields_gather", "Write the fields from rank 0 after gathering them (the former writer, kept to measure against; displacements only)", "", o->gather, &o->gather, nullptr));
   PetscFunctionReturn(0);
@@ -371,20 +398,28 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
     if (ff->opt.results) PetscCall(WriteResults(a, ff, f));
     PetscCall(PetscViewerHDF5PopGroup(v));
   }
-  PetscCall(PetscViewerHDF5PushGroup(v, (g + "/joints").c_str()));
-  PetscCall(WriteJoints(a, ff, f));
-  PetscCall(PetscViewerHDF5PopGroup(v));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "load", PETSC_REAL, &info.load));
-  PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "step", PETSC_INT, &info.step));
-  PetscCall(PetscViewerFlush(v));
-  ff->steps.emplace_back(info.step, info.load);
   // Everything collective is done before rank 0 writes its files alone: an error there must not
   // leave the other ranks waiting in a collective call (OutputStep shares it).
   std::vector<BypassRow> bypass;
   const bool             withBypass = ff->opt.results && ff->map.nodes.nglobal > 0;
-  if (withBypass) PetscCall(GatherBypass(a, ff, f, bypass));
+  if (withBypass) PetscCall(OwnedBypass(a, ff, f, bypass));
+  PetscCall(PetscViewerHDF5PushGroup(v, (g + "/joints").c_str()));
+  PetscCall(WriteJoints(a, ff, f));
+  if (withBypass) PetscCall(WriteBypassFields(a, ff, bypass));
+  PetscCall(PetscViewerHDF5PopGroup(v));
+  if (withBypass) PetscCall(PetscViewerHDF5WriteAttribute(v, (g + "/joints").c_str(), "bypass_width", PETSC_REAL, &ff->map.bypass_width));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "load", PETSC_REAL, &info.load));
+  PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "step", PETSC_INT, &info.step));
+  PetscCall(PetscViewerFlush(v));
+  ff->steps.emplace_back(info.step, info.load);
+  // bypass.csv, for models small enough for joints.csv: the rows gathered to rank 0.
+  if (withBypass && ff->bypass_csv) {
+    std::vector<BypassRow> all;
+    PetscCall(GatherToZero(a->comm, bypass, all));
+    bypass.swap(all);
+  }
   if (a->rank == 0) PetscCall(WriteXdmf(*ff));
-  if (a->rank == 0 && withBypass) PetscCall(WriteBypass(ff, info, bypass));
+  if (a->rank == 0 && withBypass && ff->bypass_csv) PetscCall(WriteBypass(ff, info, bypass));
   PetscFunctionReturn(0);
 }
 

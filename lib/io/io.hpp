@@ -75,6 +75,7 @@ struct FieldsFile {
   FieldMap      map;                                   // the parallel writer's numbering
   bool          mapped = false;
   FILE         *bypass = nullptr;                      // bypass.csv (rank 0), with the element results
+  bool          bypass_csv = true;                     // write bypass.csv (with joints.csv); fields.h5 always has the bypass
 };
 // Collective: the step's fields into fields.h5, then (rank 0) the xdmf files rewritten for every
 // step so far.

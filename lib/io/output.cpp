@@ -140,6 +140,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   out->ff.dir   = dir;
   out->ff.scene = scene;
   out->ff.opt   = fields;
+  out->ff.bypass_csv = out->files.csv; // a model large enough for joints.h5 has its bypass in fields.h5 only
   if (out->fields && fields.gather) {
     PetscInt tri = -1, any; // the id of a part with triangles
     for (const auto &[index, sp] : a->layout.shells)

@@ -168,6 +168,7 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
   out->ff.dir   = dir;
   out->ff.scene = scene;
   out->ff.opt   = fields;
+  out->ff.bypass_csv = out->files.csv; // a model large enough for joints.h5 has its bypass in fields.h5 only
   if (rank == 0) {
     try {
       why = Resume(a, out);
