@@ -39,7 +39,7 @@ struct AssemblyOptions {
   // Patches: condensed onto their ports, or kept whole (docs/solver.md, "Condensed patches"):
   // every one, none, or each where its dense port block is cheaper (patch/layout.hpp).
   Condense     condense       = Condense::Auto;
-  PetscReal    condense_ratio = 8;
+  PetscReal    condense_ratio = 4;
   // The six rigid-body modes of the nodes as the Jacobian's near-null space (MatSetNearNullSpace),
   // for algebraic multigrid (docs/solver.md, "Iterative solvers"); LU ignores it.
   PetscBool    near_null_space = PETSC_TRUE;

@@ -62,7 +62,7 @@ struct LayoutOptions {
   double       reach     = 0;   // footprint reach along the fastener axis (mm); 0: 4 radius
   long         max_nodes = 0;   // largest patch in nodes (0: no cut)
   Condense     condense  = Condense::None; // which vertices carry their ports only
-  double       condense_ratio = 8;       // Condense::Auto: ports per sqrt(patch dof)
+  double       condense_ratio = 4;       // Condense::Auto: ports per sqrt(patch dof)
   bool         directors = true;  // curved parts: the elements share the mesh's nodal directors
 };
 
