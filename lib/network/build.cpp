@@ -13,8 +13,9 @@ namespace boltnet {
 namespace {
 
 // The automatic patch size (-patch_max_nodes -1). A part is cut only to share it between ranks:
-// kept whole, about eight patches per rank, none under 32 nodes; condensed, about four per rank,
-// none under 64 nodes; no cut on one rank. Cutting a condensed part for its own sake does not pay:
+// with every patch kept whole (-patch_condense false), about eight patches per rank, none under 32
+// nodes; otherwise about four per rank, none under 64 nodes (the automatic choice then decides which
+// pieces are condensed); no cut on one rank. Cutting a condensed part for its own sake does not pay:
 // the sparse factorisation of a whole plate costs about what its pieces cost, while every cut puts
 // a band of seam nodes on the interface, where each patch's S is dense over all its ports
 // (docs/solver.md, "Patch size": whole plates 11 times faster than 3,000-node pieces).
