@@ -82,7 +82,7 @@ struct OwnedPatch {
 
 struct PatchSet {
   std::vector<OwnedPatch>                                        owned;
-  std::map<PetscInt, std::vector<shell::ElementMatrix>>          seam_ops; // owned seams by edge point
+  std::map<PetscInt, std::vector<shell::ElementMatrix>>          seam_ops; // owned seams by edge point (until they are in Jbase)
   PetscLogDouble                                                 condensed_bytes = 0; // on this rank
 };
 

@@ -54,17 +54,17 @@ PetscErrorCode AssemblySetLoads(BoltnetAssembly a, const std::vector<BCDesc> &bc
   a->model.bcs                     = bcs;
   // The condensed patches: new load terms from their kept factorisations.
   PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
-      PetscFunctionBeginUser;
-      for (OwnedPatch &op : a->patches.owned) {
-        if (!op.shell) continue;
-        const ShellPatch &sp = a->layout.shells.at(op.index);
-        if (!sp.condensed) continue;
-        PatchLoads        loads;
-        PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, &loads));
-        PetscCall(CondensedPatchLoads(sp.id, loads, &op.cond));
-      }
-      PetscFunctionReturn(0);
-    }));
+    PetscFunctionBeginUser;
+    for (OwnedPatch &op : a->patches.owned) {
+      if (!op.shell) continue;
+      const ShellPatch &sp = a->layout.shells.at(op.index);
+      if (!sp.condensed) continue;
+      PatchLoads        loads;
+      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, &loads));
+      PetscCall(CondensedPatchLoads(sp.id, loads, &op.cond));
+    }
+    PetscFunctionReturn(0);
+  }));
   // The network's rows: the same held rows, new values and forces.
   PetscCall(AssemblySetUpBoundary(a));
   PetscInt differ = a->bc.dirichlet_rows != held, any;

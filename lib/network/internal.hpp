@@ -20,12 +20,4 @@ PetscErrorCode AssemblySetUpBoundary(BoltnetAssembly a);
 PetscErrorCode GetLocalX(BoltnetAssembly a, Vec X, Vec *Xl, const PetscScalar **x);
 PetscErrorCode RestoreLocalX(BoltnetAssembly a, Vec *Xl, const PetscScalar **x);
 
-// The 24 dof of a seam element in a vector whose seam vertices start at oa (side 0) and ob (side
-// 1); -1 for a node in a third patch and for a triangle's absent fourth node (side -1 both).
-void SeamElementDofs(const Seam::Element &el, PetscInt oa, PetscInt ob, PetscInt dofs[24]);
-// The offsets (global or local) of the two vertices of seam edge e.
-PetscErrorCode SeamOffsets(BoltnetAssembly a, PetscInt e, PetscBool global, PetscInt *oa, PetscInt *ob);
-// The seam of edge e.
-PetscErrorCode SeamOf(BoltnetAssembly a, PetscInt e, const Seam **seam);
-
 } // namespace boltnet

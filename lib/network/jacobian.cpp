@@ -25,6 +25,20 @@ void SideRows(const Seam::Element &el, PetscInt ga, PetscInt gb, PetscInt rows[2
   }
 }
 
+// The global offsets of the two vertices of seam edge e, and its seam.
+PetscErrorCode SeamOf(BoltnetAssembly a, PetscInt e, const Seam **seam, PetscInt *oa, PetscInt *ob)
+{
+  SeamComp        sc;
+  const PetscInt *cone;
+  PetscFunctionBeginUser;
+  PetscCall(NetworkComponent(a->net.dm, e, nullptr, &sc, sizeof sc));
+  *seam = &a->layout.seams.at(sc.index);
+  PetscCall(DMNetworkGetConnectedVertices(a->net.dm, e, &cone));
+  PetscCall(DMNetworkGetGlobalVecOffset(a->net.dm, cone[0], ALL_COMPONENTS, oa));
+  PetscCall(DMNetworkGetGlobalVecOffset(a->net.dm, cone[1], ALL_COMPONENTS, ob));
+  PetscFunctionReturn(0);
+}
+
 // Add the blocks between the two sides of every element of an owned seam: (side 0 rows, side 1
 // columns) and (side 1 rows, side 0 columns). The blocks within one side belong to the patches.
 PetscErrorCode AddSeamBlocks(BoltnetAssembly a, Mat M, bool values)
@@ -32,10 +46,9 @@ PetscErrorCode AddSeamBlocks(BoltnetAssembly a, Mat M, bool values)
   PetscFunctionBeginUser;
   std::vector<PetscScalar> blk(24 * 24, 0.0);
   for (PetscInt e : a->net.sedges) {
-    const Seam *seam;
+    const Seam *seam = nullptr;
     PetscInt    ga, gb;
-    PetscCall(SeamOf(a, e, &seam));
-    PetscCall(SeamOffsets(a, e, PETSC_TRUE, &ga, &gb));
+    PetscCall(SeamOf(a, e, &seam, &ga, &gb));
     const auto *Ks = values ? &a->patches.seam_ops.at(e) : nullptr;
     for (size_t k = 0; k < seam->elems.size(); ++k) {
       PetscInt rows[2][24], idx[2][24];
@@ -220,12 +233,13 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscCall(MatAssemblyBegin(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatDuplicate(a->J, MAT_COPY_VALUES, &a->Jbase));
-  // Jbase now holds the patch operators and the condensed S: the residual multiplies by it, so the
-  // patches' own copies go (on a 5M-dof model a whole copy of the global matrix).
+  // Jbase now holds the patch operators, the condensed S and the seam blocks: the residual
+  // multiplies by it, so their own copies go (on a 5M-dof model a whole copy of the global matrix).
   for (OwnedPatch &op : a->patches.owned) {
     op.op = PatchOperator{};
     std::vector<double>().swap(op.cond.S);
   }
+  a->patches.seam_ops.clear();
   if (a->opt.near_null_space) PetscCall(SetRigidBodyModes(a));
   PetscFunctionReturn(0);
 }

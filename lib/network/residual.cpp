@@ -1,40 +1,10 @@
-// The residual of the network: joint forces, seam and patch internal forces, applied loads, and the
-// prescribed dof.
+// The residual of the network: joint forces, the linear part (patches and seams, through the
+// Jacobian's linear part Jbase), condensed patches' load terms, applied loads, and the prescribed dof.
 #include "core/guard.hpp"
 #include "core/log.hpp"
 #include "network/internal.hpp"
 
 namespace boltnet {
-
-void SeamElementDofs(const Seam::Element &el, PetscInt oa, PetscInt ob, PetscInt dofs[24])
-{
-  for (int k = 0; k < 4; ++k)
-    for (int i = 0; i < 6; ++i) dofs[6 * k + i] = el.side[k] < 0 ? -1 : (el.side[k] ? ob : oa) + 6 * el.node[k] + i;
-}
-
-PetscErrorCode SeamOffsets(BoltnetAssembly a, PetscInt e, PetscBool global, PetscInt *oa, PetscInt *ob)
-{
-  const PetscInt *cone;
-  PetscFunctionBeginUser;
-  PetscCall(DMNetworkGetConnectedVertices(a->net.dm, e, &cone));
-  if (global) {
-    PetscCall(DMNetworkGetGlobalVecOffset(a->net.dm, cone[0], ALL_COMPONENTS, oa));
-    PetscCall(DMNetworkGetGlobalVecOffset(a->net.dm, cone[1], ALL_COMPONENTS, ob));
-  } else {
-    PetscCall(DMNetworkGetLocalVecOffset(a->net.dm, cone[0], ALL_COMPONENTS, oa));
-    PetscCall(DMNetworkGetLocalVecOffset(a->net.dm, cone[1], ALL_COMPONENTS, ob));
-  }
-  PetscFunctionReturn(0);
-}
-
-PetscErrorCode SeamOf(BoltnetAssembly a, PetscInt e, const Seam **seam)
-{
-  SeamComp sc;
-  PetscFunctionBeginUser;
-  PetscCall(NetworkComponent(a->net.dm, e, nullptr, &sc, sizeof sc));
-  *seam = &a->layout.seams.at(sc.index);
-  PetscFunctionReturn(0);
-}
 
 PetscErrorCode GetLocalX(BoltnetAssembly a, Vec X, Vec *Xl, const PetscScalar **x)
 {
