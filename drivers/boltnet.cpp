@@ -201,6 +201,7 @@ PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, con
     l << "converged, " << a->steps.size() << " steps (" << a->total_cutbacks << " cut-backs), load factor " << a->lambda;
     if (out.most_joint >= 0) l << ", most loaded joint " << out.most_joint << " (in-plane force " << out.most_force << " at load " << out.most_load << ")";
   }
+  if (a->opt.progress) PetscCall(PetscPrintf(comm, "boltnet: peak resident memory per rank %.0f MB (largest), %.0f MB (smallest)\n", out.peak_mb[1], out.peak_mb[0]));
   PetscCall(OutputClose(comm, &out));
   PetscCall(PetscTime(&t1));
   l.precision(3);
@@ -229,6 +230,7 @@ PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o,
   PetscCall(LoadPathFromOptions(comm, nullptr, &base));
   PetscCall(DescribeCases(src, scene, o, base, group, a, &cases, ngroups));
   PetscCall(BoltnetAssemblySetFromOptions(a));
+  a->opt.keep_layout = o.fields.gather; // the gathering writer reads every patch's mesh on rank 0
   if (!o.helpOnly && (o.every > 0 || !o.restart.empty())) PetscCall(CheckpointIdentify(a, scene.name, &ident)); // before the set-up takes the meshes
   PetscCall(BoltnetAssemblySetUp(a));
   PetscCall(SceneCheckUnusedOptions(comm));

@@ -73,7 +73,7 @@ std::vector<PetscInt> JointRows(BoltnetAssembly a)
   return mine;
 }
 
-// Sum over the ranks of the checksum terms of v's entries (io/hash.hpp).
+// Sum over the ranks of the checksum terms of v's entries (core/hash.hpp).
 static PetscErrorCode Checksum(Vec v, std::uint64_t tag, std::uint64_t *sum)
 {
   const PetscScalar *x;
@@ -216,7 +216,7 @@ PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, 
   PetscFunctionBeginUser;
   PetscCheck(!a->steps.empty(), a->comm, PETSC_ERR_ORDER, "A checkpoint is written after a converged step");
   s.format = kFormat, s.scene = id.scene, s.options = id.options, s.parts = id.parts, s.joints = id.joints, s.bcs = id.bcs;
-  s.layout = LayoutHash(a->layout), s.ranks = a->size, s.npatches = (PetscInt)a->layout.patches.size();
+  s.layout = a->layout.fingerprint, s.ranks = a->size, s.npatches = (PetscInt)a->layout.patches.size();
   s.ndof = a->net.ndof_global, s.njoints = (PetscInt)a->layout.joints.size(), s.nsteps = (PetscInt)a->steps.size();
   s.ntargets = a->path.ntargets, s.target = a->path.target, s.halved = a->path.halved, s.start = a->path.start, s.sub = a->path.sub;
   s.cutbacks = a->total_cutbacks, s.jac_assembled = a->joints.jac_assembled, s.jac_reused = a->joints.jac_reused;

@@ -35,9 +35,6 @@ std::vector<std::pair<std::string, std::string>> ResultOptions(const std::string
 // "" when the two option lists ("name value" lines) agree (numbers compared as numbers), else the
 // options that differ: "-joint_bolt_mu 0.2 (checkpoint: 0.3), -load_steps not given (checkpoint: 20)".
 std::string OptionsDifference(const std::string &now, const std::string &saved);
-// A hash (hex) of the network's layout: the patches in order with the nodes they carry. Two runs whose
-// layouts hash alike number their solution vectors alike (io/checkpoint.cpp).
-std::string LayoutHash(const Layout &L);
 
 // Collective: the committed state after the last converged step into `file`, through `file`.tmp and a
 // rename, so that a job killed during the write leaves the previous checkpoint whole. `out` gives

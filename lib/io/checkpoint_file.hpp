@@ -4,10 +4,10 @@
 //   /joints    one row of kRow per joint, joints sorted by id
 //   /steps     one row (step, load factor, Newton iterations, cut-backs) per converged step
 // and the scalars (Saved) as attributes of the root group. Two checksums find a damaged file: one of
-// the scalars, one of the arrays (io/hash.hpp); neither depends on the number of ranks.
+// the scalars, one of the arrays (core/hash.hpp); neither depends on the number of ranks.
 #pragma once
 #include "io/checkpoint.hpp"
-#include "io/hash.hpp"
+#include "core/hash.hpp"
 
 #include <petsclayouthdf5.h> // PetscViewerHDF5ReadSizes
 #include <petscviewerhdf5.h>

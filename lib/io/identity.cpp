@@ -2,7 +2,7 @@
 // hashes of the model and of the network's layout.
 #include "core/guard.hpp"
 #include "io/checkpoint.hpp"
-#include "io/hash.hpp"
+#include "core/hash.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -110,28 +110,6 @@ std::string OptionsDifference(const std::string &now, const std::string &saved)
   for (const auto &[name, value] : b)
     if (!a.count(name)) note(name, "not given", value.empty() ? "given" : value);
   return d.str();
-}
-
-std::string LayoutHash(const Layout &L)
-{
-  Hasher h;
-  h.Add((std::uint64_t)L.patches.size());
-  for (size_t p = 0; p < L.patches.size(); ++p) {
-    h.Add(L.patches[p].id);
-    h.Add(L.patches[p].kind);
-    h.Add(L.patches[p].nnodes);
-    const auto sh = L.shells.find((PetscInt)p);
-    if (sh == L.shells.end()) continue;
-    h.Add(sh->second.part_node);
-    h.Add(sh->second.carried);
-  }
-  h.Add((std::uint64_t)L.joints.size());
-  for (const JointComp &j : L.joints) {
-    h.Add(j.id);
-    h.Add(j.va);
-    h.Add(j.vb);
-  }
-  return h.Hex();
 }
 
 PetscErrorCode CheckpointIdentify(BoltnetAssembly a, const std::string &scene, CheckpointIdentity *id)

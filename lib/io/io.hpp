@@ -1,5 +1,6 @@
 // Scenes (PETSc YAML options + CSV tables) and results (joints.csv, summary.json).
 #pragma once
+#include "core/memory.hpp"
 #include "network/assembly.hpp"
 #include "network/fields.hpp"
 #include "io/joint_table.hpp"
@@ -105,6 +106,7 @@ struct Output {
   PetscInt  most_joint = -1, most_step = 0;
   PetscReal most_force = -1, most_load = 0;
   std::string identified = "{}"; // joint types identified from geometry at start-up (Scene)
+  RankRange   peak_mb    = {0, 0}; // peak resident MB over the ranks, [smallest, largest] (OutputSummary)
   std::string load_case;         // the load case's name, "" for a run of one case (summary.json)
   PetscBool   fields     = PETSC_FALSE; // write the fields (OutputOpen decides)
   FieldsFile  ff;

@@ -268,6 +268,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCGetType(pc, &ptype));
   PetscCall(PCFactorGetMatSolverType(pc, &stype));
+  PetscCall(ResidentMemory(a->comm, true, &out->peak_mb));
   std::string why;
   if (a->rank == 0) {
     std::ostringstream j;
@@ -288,6 +289,11 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
     if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << JsonNumber(out->most_load) << ", \"in_plane_force\": " << JsonNumber(out->most_force) << "}";
     else j << "null";
     j << ",\n  \"identified_joint_types\": " << out->identified;
+    // Resident MB per rank, [smallest, largest]: at the end of each phase of the set-up, and the peak.
+    j << ",\n  \"memory_mb\": {";
+    auto mb = [](const RankRange &r) { return "[" + std::to_string(std::llround(r[0])) + ", " + std::to_string(std::llround(r[1])) + "]"; };
+    for (const MemoryMark &m : a->memory) j << JsonString(m.phase) << ": " << mb(m.mb) << ", ";
+    j << "\"peak\": " << mb(out->peak_mb) << "}";
     j << "\n}\n";
     // Written last, whole or not at all: a summary on disk is never a cut one.
     why = WriteFileWhole(out->dir + "/summary.json", j.str());

@@ -47,7 +47,7 @@ PetscErrorCode CheckIdentity(BoltnetAssembly a, const CheckpointIdentity &id, co
   if (s.joints != id.joints) model += std::string(model.empty() ? "" : ", ") + "the joints (fasteners and their parameters)";
   if (s.bcs != id.bcs) model += std::string(model.empty() ? "" : ", ") + "the boundary conditions";
   PetscCheck(model.empty(), a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) was written for another model: %s of this scene differ from those of the run that wrote it (a table or mesh file changed)", file, model.c_str());
-  if (s.layout != LayoutHash(a->layout)) {
+  if (s.layout != a->layout.fingerprint) {
     PetscCheck(s.ranks == a->size, a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) was written on %" PetscInt_FMT " rank(s), this run has %d, and the network is laid out differently on them (%" PetscInt_FMT " patches then, %zu now): -patch_max_nodes -1 (automatic) cuts the parts by the number of ranks. Restart on %" PetscInt_FMT " rank(s); a run that may move to another number of ranks needs an explicit -patch_max_nodes", file, s.ranks, a->size, s.npatches, a->layout.patches.size(), s.ranks);
     SETERRQ(a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) belongs to a network laid out differently (%" PetscInt_FMT " patches then, %zu now)", file, s.npatches, a->layout.patches.size());
   }

@@ -13,6 +13,7 @@
 
 #include "boltnet.h"
 #include "core/compat.h"
+#include "core/memory.hpp"
 #include "joint/jointset.hpp"
 #include "model/model.hpp"
 #include "patch/condense.hpp"
@@ -55,6 +56,9 @@ struct AssemblyOptions {
   PetscReal    coupling_penalty = 1e3;
   // Curved shell parts: the elements around a node share the mesh's nodal director (docs/shell.md).
   PetscBool    shell_directors = PETSC_TRUE;
+  // Every rank keeps the whole layout after the set-up (the gathering fields writer needs it on
+  // rank 0); otherwise each keeps only the patches and seams its operators and joints use.
+  PetscBool    keep_layout = PETSC_FALSE;
   PetscBool    setfromoptions_called = PETSC_FALSE;
 };
 
@@ -172,7 +176,10 @@ struct _p_BoltnetAssembly {
   PetscBool                      resume = PETSC_FALSE; // the next solve goes on from `path` (a restart)
   std::vector<boltnet::StepInfo> steps;
   PetscInt                       total_cutbacks = 0;
-  std::string                    failure; // non-empty after a step failed beyond the cut-back bound
+  std::string                    failure;
+  // Resident memory per rank at the end of each phase of the set-up (network/build.cpp), for
+  // summary.json.
+  std::vector<boltnet::MemoryMark> memory; // non-empty after a step failed beyond the cut-back bound
 
   // Called on every rank after each converged step.
   std::function<PetscErrorCode(BoltnetAssembly, const boltnet::StepInfo &)> on_step;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <set>
 
 namespace boltnet {
 namespace {
@@ -172,6 +173,48 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// Once the operators are built, what the rank keeps of the layout: the shell patches it owns and
+// those its joints attach to (a joint's attachment point is read from both sides' meshes), and the
+// seams it owns. Of every other shell patch only its record stays (which part, whether condensed):
+// code that asks whether a patch is a shell finds it. The whole meshes of the cut parts go too, so
+// that past the set-up no rank holds the whole model (docs/performance.md, "Memory per rank").
+PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
+{
+  std::set<PetscInt> keep, mine;
+  PetscFunctionBeginUser;
+  for (const OwnedPatch &op : a->patches.owned) keep.insert(op.index);
+  for (const JointComp &j : a->joints.comp) keep.insert({j.va, j.vb});
+  for (auto &[pos, sp] : a->layout.shells) {
+    if (keep.count(pos)) continue;
+    ShellPatch stub;
+    stub.id        = sp.id;
+    stub.material  = sp.material;
+    stub.drill     = sp.drill;
+    stub.condensed = sp.condensed;
+    sp             = std::move(stub);
+  }
+  for (PetscInt e : a->net.sedges) {
+    SeamComp sc;
+    PetscCall(NetworkComponent(a->net.dm, e, nullptr, &sc, sizeof sc));
+    mine.insert(sc.index);
+  }
+  for (size_t s = 0; s < a->layout.seams.size(); ++s)
+    if (!mine.count((PetscInt)s)) std::vector<Seam::Element>().swap(a->layout.seams[s].elems);
+  a->layout.cut_parts.clear();
+  PetscFunctionReturn(0);
+}
+
+// The resident memory over the ranks at the end of a phase of the set-up.
+PetscErrorCode MarkMemory(BoltnetAssembly a, const char *phase)
+{
+  MemoryMark m{phase, {0, 0}};
+  PetscFunctionBeginUser;
+  PetscCall(ResidentMemory(a->comm, false, &m.mb));
+  PetscCall(PetscInfo(nullptr, "Resident memory after the set-up's %s: %.0f to %.0f MB per rank\n", phase, m.mb[0], m.mb[1]));
+  a->memory.push_back(m);
+  PetscFunctionReturn(0);
+}
+
 } // namespace
 
 PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, size_t bytes)
@@ -188,6 +231,8 @@ PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, siz
 PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
 {
   PetscFunctionBeginUser;
+  a->memory.clear();
+  PetscCall(MarkMemory(a, "model"));
   PetscCall(PetscLogStagePush(Events().setup_stage));
   PetscCall(PetscLogEventBegin(Events().layout, 0, 0, 0, 0));
   LayoutOptions lo;
@@ -210,13 +255,16 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
     a->net.ncondensed += kv.second.condensed;
   }
   PetscCall(PetscLogEventEnd(Events().layout, 0, 0, 0, 0));
+  PetscCall(MarkMemory(a, "layout"));
 
   PetscCall(PetscLogEventBegin(Events().network, 0, 0, 0, 0));
   PetscCall(CreateNetwork(a));
   PetscCall(LocalViews(a));
   PetscCall(PetscLogEventEnd(Events().network, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
+  PetscCall(MarkMemory(a, "network"));
   PetscCall(BuildOperators(a));
+  PetscCall(MarkMemory(a, "operators"));
 
   PetscCall(DMCreateGlobalVector(a->net.dm, &a->X));
   PetscCall(VecGetSize(a->X, &a->net.ndof_global));
@@ -229,6 +277,8 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   PetscCall(VecSet(a->X, 0.0));
   PetscCall(AssemblyCreateJacobian(a));
   PetscCall(AssemblySetUpBoundary(a));
+  if (!a->opt.keep_layout) PetscCall(ReleaseUnowned(a));
+  PetscCall(MarkMemory(a, "setup"));
   PetscFunctionReturn(0);
 }
 

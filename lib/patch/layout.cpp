@@ -1,6 +1,7 @@
 // The layout (layout.hpp): checks of the model, joint attachment, cutting, ports.
 #include "patch/layout.hpp"
 #include "core/guard.hpp"
+#include "core/hash.hpp"
 #include "mesh/cut.hpp"
 #include "mesh/search.hpp"
 
@@ -280,6 +281,29 @@ void Carry(Layout *L, const LayoutOptions &o)
         if (el.side[k] >= 0) el.node[k] = L->shells[el.side[k] ? sm.vb : sm.va].carried_index.at(el.node[k]);
 }
 
+// Layout::fingerprint: the patches with the nodes they carry, the joints with their patches.
+std::string Fingerprint(const Layout &L)
+{
+  Hasher h;
+  h.Add((std::uint64_t)L.patches.size());
+  for (size_t p = 0; p < L.patches.size(); ++p) {
+    h.Add(L.patches[p].id);
+    h.Add(L.patches[p].kind);
+    h.Add(L.patches[p].nnodes);
+    const auto sh = L.shells.find((PetscInt)p);
+    if (sh == L.shells.end()) continue;
+    h.Add(sh->second.part_node);
+    h.Add(sh->second.carried);
+  }
+  h.Add((std::uint64_t)L.joints.size());
+  for (const JointComp &j : L.joints) {
+    h.Add(j.id);
+    h.Add(j.va);
+    h.Add(j.vb);
+  }
+  return h.Hex();
+}
+
 } // namespace
 
 PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Layout *L)
@@ -352,6 +376,7 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     L->joints.push_back(j);
   }
   Carry(L, o);
+  L->fingerprint = Fingerprint(*L);
   PetscFunctionReturn(0);
 }
 

@@ -74,6 +74,11 @@ struct Layout {
   std::vector<JointComp>         joints;    // in the model's order
   std::map<PetscInt, ShellMesh>  cut_parts; // the whole meshes of the parts that were cut, by user id
   PetscInt                       nparts = 0;
+  // A hash (hex) of the whole layout: the patches in order with the nodes they carry, the joints'
+  // patches. Two runs whose layouts hash alike number their solution vectors alike, so a checkpoint
+  // of one restarts the other (io/checkpoint.cpp). Computed while every rank still holds the whole
+  // layout: once the network is built, each keeps only what it owns (network/build.cpp).
+  std::string                    fingerprint;
 };
 
 // Check the model and lay it out. The shell parts' meshes move from the model into the layout.

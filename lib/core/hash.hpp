@@ -1,6 +1,6 @@
-// Hashes for checkpoints (io/checkpoint.hpp): FNV-1a over bytes, to identify a model or an option
-// list, and an order-free checksum of indexed values, to find a damaged file. Neither is a
-// cryptographic hash: they guard against mistakes and damage, not against forgery.
+// Hashes: FNV-1a over bytes, to identify a model, a layout (patch/layout.hpp) or an option list
+// (io/checkpoint.hpp), and an order-free checksum of indexed values, to find a damaged checkpoint.
+// Neither is a cryptographic hash: they guard against mistakes and damage, not against forgery.
 #pragma once
 #include <array>
 #include <cstdint>
