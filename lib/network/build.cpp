@@ -176,8 +176,8 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
 // Once the operators are built, what the rank keeps of the layout: the shell patches it owns and
 // those its joints attach to (a joint's attachment point is read from both sides' meshes), and the
 // seams it owns. Of every other shell patch only its record stays (which part, whether condensed):
-// code that asks whether a patch is a shell finds it. The whole meshes of the cut parts go too, so
-// that past the set-up no rank holds the whole model (docs/performance.md, "Memory per rank").
+// code that asks whether a patch is a shell finds it. The whole meshes of the cut parts and the
+// model's joint descriptions go too, so that past the set-up no rank holds the whole model (docs/performance.md, "Memory per rank").
 PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
 {
   std::set<PetscInt> keep, mine;
@@ -201,6 +201,7 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
   for (size_t s = 0; s < a->layout.seams.size(); ++s)
     if (!mine.count((PetscInt)s)) std::vector<Seam::Element>().swap(a->layout.seams[s].elems);
   a->layout.cut_parts.clear();
+  std::vector<JointDesc>().swap(a->model.joints); // laid out: the network's joint components hold them
   PetscFunctionReturn(0);
 }
 
