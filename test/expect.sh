@@ -1,8 +1,10 @@
 #!/bin/bash
 # expect.sh: run a command and check how it ends.
-#   expect.sh [--fail] [--match REGEX]... [--unchanged FILE]... -- command [args...]
+#   expect.sh [--fail] [--match REGEX]... [--reject REGEX]... [--unchanged FILE]... -- command [args...]
 # --fail            the command must exit non-zero (default: it must exit 0)
+# --status N        the command must exit N (with N > 0, implies --fail)
 # --match REGEX     its output (stdout and stderr) must match REGEX (grep -E)
+# --reject REGEX    its output must not match REGEX
 # --unchanged FILE  FILE must be byte-for-byte the same after the command (nothing written is corrupted)
 # --max-lines N     its output must have at most N lines (an error is one line, not a traceback)
 # --absent PATH     PATH must not exist after the command (nothing was written)
@@ -10,12 +12,16 @@ set -u
 max_lines=''
 absent=()
 want_fail=0
+want_status=''
 matches=()
+rejects=()
 keep=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --fail) want_fail=1 ;;
+    --status) want_status=$2; [ "$2" != 0 ] && want_fail=1; shift ;;
     --match) matches+=("$2"); shift ;;
+    --reject) rejects+=("$2"); shift ;;
     --unchanged) keep+=("$2"); shift ;;
     --max-lines) max_lines=$2; shift ;;
     --absent) absent+=("$2"); shift ;;
@@ -33,8 +39,12 @@ echo "[exit status $status]"
 ok=1
 if [ $want_fail = 1 ] && [ $status = 0 ]; then echo "expect.sh: expected a failure, the command succeeded"; ok=0; fi
 if [ $want_fail = 0 ] && [ $status != 0 ]; then echo "expect.sh: expected success, the command exited $status"; ok=0; fi
+if [ -n "$want_status" ] && [ "$status" != "$want_status" ]; then echo "expect.sh: expected exit status $want_status, the command exited $status"; ok=0; fi
 for r in "${matches[@]+"${matches[@]}"}"; do
   if ! grep -Eq -- "$r" <<<"$out"; then echo "expect.sh: output does not match: $r"; ok=0; fi
+done
+for r in "${rejects[@]+"${rejects[@]}"}"; do
+  if grep -Eq -- "$r" <<<"$out"; then echo "expect.sh: output matches what it must not: $r"; ok=0; fi
 done
 # A sanitizer's report (scripts/sanitize) is a failure even where the command must fail.
 if grep -Eq -- "runtime error: |ERROR: (Address|Leak|UndefinedBehavior)Sanitizer" <<<"$out"; then

@@ -259,6 +259,10 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
 // After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->singular
 // names the mechanism (patches, dof, joints) from a null vector of the Jacobian.
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull);
+// After a failed linear solve: why MUMPS could not factor the Jacobian, when a smaller load step
+// cannot change it (out of memory, a workspace estimate too small: every MUMPS error but a singular
+// matrix), with what to do about it; "" otherwise, or for other solvers.
+PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why);
 PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx);
 // After a failed solve: the joints that changed state most often during it, with their states.
 PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg);

@@ -297,4 +297,46 @@ PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why)
+{
+  KSP           ksp;
+  PC            pc;
+  PetscBool     mumps;
+  Mat           F;
+  MatFactorType ftype;
+  PetscInt      info1, info2, N;
+  PetscFunctionBeginUser;
+  why.clear();
+  PetscCall(MumpsLU(a, &ksp, &pc, &mumps));
+  if (!mumps) PetscFunctionReturn(0);
+  PetscCall(PCFactorGetMatrix(pc, &F));
+  PetscCall(MatGetFactorType(F, &ftype));
+  if (ftype == MAT_FACTOR_NONE) PetscFunctionReturn(0);
+  PetscCall(MatMumpsGetInfog(F, 1, &info1));
+  PetscCall(MatMumpsGetInfog(F, 2, &info2));
+  // -10 is a numerically singular matrix: a mechanism of the joints' states, which a smaller step
+  // may avoid (AssemblyCheckNullPivots names it). Every other error is the matrix's size or
+  // MUMPS's resources, the same at any load.
+  if (info1 >= 0 || info1 == -10) PetscFunctionReturn(0);
+  PetscCall(MatGetSize(a->J, &N, nullptr));
+  std::ostringstream m;
+  m.precision(3);
+  m << "MUMPS could not factor the " << N << "-dof Jacobian (INFOG(1) = " << info1 << ", INFOG(2) = " << info2 << "): ";
+  switch (info1) {
+  case -13: {
+    // INFOG(2): the allocation that failed, in reals, or in millions of reals when negative (MUMPS
+    // users' guide, "Error diagnostics").
+    const double bytes = (info2 < 0 ? -1e6 * (double)info2 : (double)info2) * sizeof(PetscScalar);
+    m << "out of memory, an allocation of " << bytes / 1e9 << " GB failed. A smaller load step does not change that; run on more ranks (MUMPS distributes its factors), condense more patches onto their ports (-patch_condense_ratio), or keep the factors on disk (-mat_mumps_icntl_22 1)";
+    break;
+  }
+  case -19: m << "-mat_mumps_icntl_23 limits MUMPS's working memory per rank to less than the factorisation needs; raise or remove it"; break;
+  case -8: case -9: case -11: case -12: case -14: case -15: case -17: case -20:
+    m << "MUMPS's estimate of its workspace was short; raise -mat_mumps_icntl_14 (the extra workspace in percent)"; break;
+  default: m << "see the MUMPS users' guide, \"Error diagnostics\"";
+  }
+  why = m.str();
+  PetscFunctionReturn(0);
+}
+
 } // namespace boltnet

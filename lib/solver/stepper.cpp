@@ -342,6 +342,16 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         std::string singular;
         PetscCall(SNESGetKSP(a->snes, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
+        // A factorisation that failed for want of memory fails the same way at any load: stop here
+        // and say so, rather than cut the step back and factor again.
+        std::string fatal;
+        PetscCall(AssemblyFactorError(a, fatal));
+        if (!fatal.empty()) {
+          std::ostringstream m;
+          m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << ": " << fatal;
+          a->failure = m.str();
+          SETERRQ(a->comm, PETSC_ERR_LIB, "%s", a->failure.c_str());
+        }
         // A Krylov solve preconditioned by a singular factorisation breaks down before the
         // convergence test sees the null pivots: look at them here, before the reset.
         if (a->singular.empty()) {
