@@ -10,30 +10,52 @@ foreach(ranks 1 2 3)
   set_tests_properties(memory_report_lap_rows_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}")
 endforeach()
 
-# A factorisation that fails for want of memory stops the run at once, saying so (exit 3, summary.json
-# "failed" with MUMPS's INFOG(1)), instead of cutting the load step back eight times and factoring the
-# same matrix again. The reference is MUMPS's own diagnosis: ICNTL(23) = 1 caps its working memory at
-# 1 MB per rank, which no factorisation of lap-rows' 26,472 dof fits (INFOG(1) = -19).
+# A factorisation that fails for want of memory is not cut back (the matrix, and the memory it
+# needs, is the same at any load): the same step is factored again once with the factors on disk
+# (-interface_out_of_core, the default), and if that fails too the run stops saying why (exit 3,
+# summary.json "failed" with MUMPS's INFOG(1)). The references are MUMPS's own diagnoses and, where
+# the run converges, lap-rows' closed-form load shares. -mat_mumps_icntl_23 caps MUMPS's working
+# memory per rank: lap-rows' 26,472 dof need 37 to 55 MB per rank in core and 19 to 25 MB out of
+# core on 1 to 3 ranks (MUMPS's INFOG(16), INFOG(26)); no factorisation fits in 1 MB.
 foreach(ranks 1 2 3)
   set(out ${BOLTNET_OUT}/factor_memory_cap_np${ranks})
   boltnet_expect(factor_memory_cap ${ranks} --status 3
-    --match "FAILED: Load step 1 from load factor 0 to 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -19"
-    --match "mat_mumps_icntl_23 limits"
+    --match "load step 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -19.*factoring again with the factors on disk"
+    --match "FAILED: Load step 1 from load factor 0 to 1: MUMPS could not factor the 26472-dof Jacobian with its factors on disk \\(INFOG\\(1\\) = -19"
+    --match "mat_mumps_icntl_23 caps"
     --reject "cutting the increment" --
     ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
     -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 1)
   add_test(NAME factor_memory_cap_summary_np${ranks}
-    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['status']=='failed' and 'INFOG(1) = -19' in s['message'] and s['cutbacks']==0 else 'summary.json: ' + s['status'] + ', ' + s['message'])" ${out}/summary.json)
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['status']=='failed' and 'INFOG(1) = -19' in s['message'] and s['cutbacks']==0 and s['factors_on_disk'] else 'summary.json: ' + s['status'] + ', ' + s['message'])" ${out}/summary.json)
   set_tests_properties(factor_memory_cap_summary_np${ranks} PROPERTIES DEPENDS factor_memory_cap_np${ranks})
+  # A 30 MB cap: in core does not fit, on disk does; the run converges to the load shares.
+  set(out ${BOLTNET_OUT}/factor_out_of_core_np${ranks})
+  add_test(NAME factor_out_of_core_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "factoring again with the factors on disk" --match "1 steps converged \\(0 cut-backs\\)" --
+            ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
+            -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 30)
+  set_tests_properties(factor_out_of_core_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_SETUP factor_out_of_core_np${ranks})
+  add_test(NAME factor_out_of_core_load_shares_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+  set_tests_properties(factor_out_of_core_load_shares_np${ranks} PROPERTIES FIXTURES_REQUIRED factor_out_of_core_np${ranks})
 endforeach()
+# -interface_out_of_core false: the first failure stops the run.
+boltnet_expect(factor_no_out_of_core 1 --status 3
+  --match "FAILED: Load step 1 from load factor 0 to 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -19"
+  --match "or keep the factors on disk \\(-interface_out_of_core\\)"
+  --reject "factoring again" --reject "cutting the increment" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_no_out_of_core
+  -output_fields false -patch_condense false -mat_mumps_icntl_23 30 -interface_out_of_core false)
 
-# An allocation MUMPS cannot get (INFOG(1) = -13): ICNTL(14) = 2,000,000 asks for 20,000 times its
-# workspace estimate, hundreds of GB, which the kernel refuses (its default overcommit heuristics
-# refuse one allocation larger than memory and swap). The message gives the size from INFOG(2)
-# (millions of reals when negative, MUMPS users' guide). Where a kernel grants it (overcommit
-# always), the run converges and the test is skipped.
+# An allocation MUMPS cannot get (INFOG(1) = -13): ICNTL(14) = 2,000,000 makes MUMPS ask for 20,000
+# times its in-core workspace estimate, hundreds of GB, which the kernel refuses (its default
+# overcommit heuristics refuse one allocation larger than memory and swap); the message gives the
+# size from INFOG(2) (millions of reals when negative, MUMPS users' guide). Out of core MUMPS sizes
+# its workspace from the fronts alone and gets it: the step converges to the closed-form load
+# shares. Where a kernel grants the first allocation (overcommit always), the test is skipped.
 set(out ${BOLTNET_OUT}/factor_out_of_memory_np1)
 add_test(NAME factor_out_of_memory_np1
-  COMMAND sh -c "\"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -patch_condense false -mat_mumps_icntl_14 2000000 > \"$2.txt\" 2>&1; rc=$?; cat \"$2.txt\"; if [ $rc = 0 ]; then echo 'the kernel granted the allocation'; exit 77; fi; [ $rc = 3 ] && grep -Eq 'INFOG\\(1\\) = -13, INFOG\\(2\\) = -[0-9]+\\): out of memory, an allocation of [0-9.e+]+ GB failed' \"$2.txt\" && ! grep -q 'cutting the increment' \"$2.txt\""
-          $<TARGET_FILE:boltnet_driver> ${BOLTNET_SCENES}/lap-rows.yaml ${out})
+  COMMAND sh -c "\"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -patch_condense false -mat_mumps_icntl_14 2000000 > \"$2.txt\" 2>&1; rc=$?; cat \"$2.txt\"; if ! grep -q 'INFOG(1) = -13' \"$2.txt\" && [ $rc = 0 ]; then echo 'the kernel granted the allocation'; exit 77; fi; [ $rc = 0 ] && grep -Eq 'load step 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -13, INFOG\\(2\\) = -[0-9]+\\): out of memory, an allocation of [0-9.e+]+ GB failed; factoring again with the factors on disk' \"$2.txt\" && grep -q '1 steps converged (0 cut-backs)' \"$2.txt\" && \"$3\" \"$4\" \"$2/joints.csv\" 21820 72000 20 1.27 20"
+          $<TARGET_FILE:boltnet_driver> ${BOLTNET_SCENES}/lap-rows.yaml ${out} ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py)
 set_tests_properties(factor_out_of_memory_np1 PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" SKIP_RETURN_CODE 77)

@@ -159,6 +159,10 @@ struct _p_BoltnetAssembly {
   PetscInt  refactor_its = 25;
   Mat       Pfac         = nullptr; // created by AssemblySetUpSolver for the lagged solve only
   PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
+  // When MUMPS cannot hold the factors in memory, factor again with them on disk (ICNTL(22) = 1):
+  // -interface_out_of_core; factors_on_disk once that happened (AssemblySetUpNullPivots sets it).
+  PetscBool out_of_core     = PETSC_TRUE;
+  PetscBool factors_on_disk = PETSC_FALSE;
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
   Mat       Jabs      = nullptr;     // |J_ij| of the last Jacobian: the round-off of each row of K u
@@ -253,16 +257,19 @@ struct Equilibrium {
 };
 PetscErrorCode AssemblyEquilibrium(BoltnetAssembly a, Vec X, Equilibrium *eq);
 std::string    DescribeEquilibrium(const Equilibrium &eq);
-// MUMPS null pivot detection (ICNTL(24), threshold CNTL(3)) on the SNES's factorisation; a no-op
-// for other solvers. Call after the solver is set up and after every PCReset.
+// MUMPS null pivot detection (ICNTL(24), threshold CNTL(3)) on the SNES's factorisation, and its
+// factors on disk (ICNTL(22)) once they did not fit in memory; a no-op for other solvers. Call
+// after the solver is set up and after every PCReset.
 PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
 // After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->singular
 // names the mechanism (patches, dof, joints) from a null vector of the Jacobian.
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull);
-// After a failed linear solve: why MUMPS could not factor the Jacobian, when a smaller load step
+// After a failed linear solve: why MUMPS could not factor the Jacobian when a smaller load step
 // cannot change it (out of memory, a workspace estimate too small: every MUMPS error but a singular
-// matrix), with what to do about it; "" otherwise, or for other solvers.
-PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why);
+// matrix), and what to do about it; "" otherwise, or for other solvers. *memory: the error is
+// MUMPS's memory (INFOG(1) = -13, an allocation refused, or -19, the cap of -mat_mumps_icntl_23),
+// which factors kept on disk may avoid.
+PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why, std::string &advice, PetscBool *memory);
 PetscErrorCode MonitorJointStates(SNES snes, PetscInt its, PetscReal fnorm, void *ctx);
 // After a failed solve: the joints that changed state most often during it, with their states.
 PetscErrorCode AssemblyDescribeChatter(BoltnetAssembly a, std::string &msg);

@@ -260,6 +260,7 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   // Set before the first factorisation; -mat_mumps_icntl_24 / -mat_mumps_cntl_3 still override them.
   PetscCall(MatMumpsSetIcntl(F, 24, 1));                   // null pivot row detection
   PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold)); // null below this x ||A_pre|| (CNTL(3) > 0: relative)
+  if (a->factors_on_disk) PetscCall(MatMumpsSetIcntl(F, 22, 1)); // out-of-core factors (MUMPS_OOC_TMPDIR)
   PetscFunctionReturn(0);
 }
 
@@ -297,7 +298,7 @@ PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why)
+PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why, std::string &advice, PetscBool *memory)
 {
   KSP           ksp;
   PC            pc;
@@ -307,6 +308,8 @@ PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why)
   PetscInt      info1, info2, N;
   PetscFunctionBeginUser;
   why.clear();
+  advice.clear();
+  *memory = PETSC_FALSE;
   PetscCall(MumpsLU(a, &ksp, &pc, &mumps));
   if (!mumps) PetscFunctionReturn(0);
   PetscCall(PCFactorGetMatrix(pc, &F));
@@ -318,24 +321,34 @@ PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why)
   // may avoid (AssemblyCheckNullPivots names it). Every other error is the matrix's size or
   // MUMPS's resources, the same at any load.
   if (info1 >= 0 || info1 == -10) PetscFunctionReturn(0);
+  *memory = info1 == -13 || info1 == -19 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(MatGetSize(a->J, &N, nullptr));
-  std::ostringstream m;
+  std::ostringstream m, d;
   m.precision(3);
-  m << "MUMPS could not factor the " << N << "-dof Jacobian (INFOG(1) = " << info1 << ", INFOG(2) = " << info2 << "): ";
+  m << "MUMPS could not factor the " << N << "-dof Jacobian" << (a->factors_on_disk ? " with its factors on disk" : "") << " (INFOG(1) = " << info1 << ", INFOG(2) = " << info2 << "): ";
   switch (info1) {
   case -13: {
     // INFOG(2): the allocation that failed, in reals, or in millions of reals when negative (MUMPS
     // users' guide, "Error diagnostics").
     const double bytes = (info2 < 0 ? -1e6 * (double)info2 : (double)info2) * sizeof(PetscScalar);
-    m << "out of memory, an allocation of " << bytes / 1e9 << " GB failed. A smaller load step does not change that; run on more ranks (MUMPS distributes its factors), condense more patches onto their ports (-patch_condense_ratio), or keep the factors on disk (-mat_mumps_icntl_22 1)";
+    m << "out of memory, an allocation of " << bytes / 1e9 << " GB failed";
+    d << "A smaller load step does not change that; run on more ranks (MUMPS distributes its factors) or condense more patches onto their ports (-patch_condense_ratio)";
+    if (!a->factors_on_disk) d << ", or keep the factors on disk (-interface_out_of_core)";
     break;
   }
-  case -19: m << "-mat_mumps_icntl_23 limits MUMPS's working memory per rank to less than the factorisation needs; raise or remove it"; break;
+  case -19:
+    m << "-mat_mumps_icntl_23 caps MUMPS's working memory per rank below what the factorisation needs";
+    d << "Raise or remove the cap";
+    if (!a->factors_on_disk) d << ", or keep the factors on disk (-interface_out_of_core)";
+    break;
   case -8: case -9: case -11: case -12: case -14: case -15: case -17: case -20:
-    m << "MUMPS's estimate of its workspace was short; raise -mat_mumps_icntl_14 (the extra workspace in percent)"; break;
-  default: m << "see the MUMPS users' guide, \"Error diagnostics\"";
+    m << "MUMPS's estimate of its workspace was short";
+    d << "Raise -mat_mumps_icntl_14 (the extra workspace, in percent)";
+    break;
+  default: m << "a MUMPS error"; d << "See the MUMPS users' guide, \"Error diagnostics\"";
   }
-  why = m.str();
+  why    = m.str();
+  advice = d.str();
   PetscFunctionReturn(0);
 }
 

@@ -29,6 +29,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscInt    isolve    = a->lagged ? 1 : 0;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
   PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes) or lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations): docs/solver.md", "AssemblySetUpSolver", isolves, 2, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsBool("-interface_out_of_core", "When MUMPS cannot hold the factors in memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23), factor again with them on disk (ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) instead of stopping: docs/solver.md", "AssemblySetUpSolver", a->out_of_core, &a->out_of_core, nullptr));
   PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->refactor_its, &a->refactor_its, nullptr));
   PetscOptionsEnd();
   PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
@@ -342,13 +343,24 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         std::string singular;
         PetscCall(SNESGetKSP(a->snes, &ksp));
         PetscCall(KSPGetPC(ksp, &pc));
-        // A factorisation that failed for want of memory fails the same way at any load: stop here
-        // and say so, rather than cut the step back and factor again.
-        std::string fatal;
-        PetscCall(AssemblyFactorError(a, fatal));
+        // A factorisation that failed for want of memory fails the same way at any load: rather
+        // than cut the step back and factor again, factor the same step again once with the
+        // factors on disk (MUMPS then holds in memory only the fronts it works on: its users'
+        // guide, "Out-of-core facility"), or stop here and say why.
+        std::string fatal, advice;
+        PetscBool   memory;
+        PetscCall(AssemblyFactorError(a, fatal, advice, &memory));
+        if (!fatal.empty() && memory && a->out_of_core && !a->factors_on_disk) {
+          a->factors_on_disk = PETSC_TRUE;
+          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)\n", a->steps.size() + 1, fatal.c_str()));
+          PetscCall(PCReset(pc));
+          a->pfac_valid = PETSC_FALSE;
+          PetscCall(AssemblySetUpNullPivots(a));
+          continue;
+        }
         if (!fatal.empty()) {
           std::ostringstream m;
-          m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << ": " << fatal;
+          m << "Load step " << a->steps.size() + 1 << " from load factor " << a->lambda << " to " << a->lambda_target << ": " << fatal << ". " << advice;
           a->failure = m.str();
           SETERRQ(a->comm, PETSC_ERR_LIB, "%s", a->failure.c_str());
         }
