@@ -180,10 +180,10 @@ struct _p_BoltnetAssembly {
   PetscBool                      resume = PETSC_FALSE; // the next solve goes on from `path` (a restart)
   std::vector<boltnet::StepInfo> steps;
   PetscInt                       total_cutbacks = 0;
-  std::string                    failure;
+  std::string                    failure; // non-empty after a step failed beyond the cut-back bound
   // Resident memory per rank at the end of each phase of the set-up (network/build.cpp), for
   // summary.json.
-  std::vector<boltnet::MemoryMark> memory; // non-empty after a step failed beyond the cut-back bound
+  std::vector<boltnet::MemoryMark> memory;
 
   // Called on every rank after each converged step.
   std::function<PetscErrorCode(BoltnetAssembly, const boltnet::StepInfo &)> on_step;

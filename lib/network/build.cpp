@@ -177,7 +177,8 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
 // those its joints attach to (a joint's attachment point is read from both sides' meshes), and the
 // seams it owns. Of every other shell patch only its record stays (which part, whether condensed):
 // code that asks whether a patch is a shell finds it. The whole meshes of the cut parts and the
-// model's joint descriptions go too, so that past the set-up no rank holds the whole model (docs/performance.md, "Memory per rank").
+// model's joint descriptions go too, so that past the set-up no rank holds the whole model
+// (docs/performance.md, "Memory per rank").
 PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
 {
   std::set<PetscInt> keep, mine;
