@@ -80,3 +80,14 @@ foreach(ranks 1 3)
     -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3a.yaml
     -scene_bcs ${BOLTNET_TEST_SCENES}/force-on-fixed.bcs.csv -output_dir ${BOLTNET_OUT}/trust_force_on_fixed)
 endforeach()
+
+# The round-off test's |J| |x| is computed from J's own arrays (no copy of |J|: lib/solver/roundoff.hpp):
+# against MatMult with an explicit |A| of a random matrix whose rows reach every rank, to 1e-14 per
+# row, on 1 to 3 ranks (test/test_abs_mult.cpp).
+add_executable(test_abs_mult test_abs_mult.cpp ${PROJECT_SOURCE_DIR}/lib/solver/roundoff.cpp)
+target_include_directories(test_abs_mult PRIVATE ${PROJECT_SOURCE_DIR}/lib)
+target_link_libraries(test_abs_mult PRIVATE PkgConfig::PETSC MPI::MPI_C)
+foreach(ranks 1 2 3)
+  boltnet_expect(abs_mult ${ranks} --match "test_abs_mult: PASS" --
+    ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:test_abs_mult>)
+endforeach()

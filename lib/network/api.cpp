@@ -39,7 +39,8 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   if (!a || !*a) PetscFunctionReturn(0);
   PetscCall(SNESDestroy(&(*a)->snes));
   PetscCall(MatDestroy(&(*a)->J));
-  PetscCall(MatDestroy(&(*a)->Jabs));
+  PetscCall(MatDestroy(&(*a)->Jlast));
+  PetscCall(AbsMultDestroy(&(*a)->roundoff));
   PetscCall(MatDestroy(&(*a)->Jbase));
   PetscCall(MatDestroy(&(*a)->Pfac));
   PetscCall(VecDestroy(&(*a)->X));

@@ -19,6 +19,7 @@
 #include "patch/condense.hpp"
 #include "patch/layout.hpp"
 #include "shell/shell.hpp"
+#include "solver/roundoff.hpp"
 
 #include <functional>
 #include <map>
@@ -165,7 +166,10 @@ struct _p_BoltnetAssembly {
   PetscBool factors_on_disk = PETSC_FALSE;
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
-  Mat       Jabs      = nullptr;     // |J_ij| of the last Jacobian: the round-off of each row of K u
+  // The last Jacobian assembled (referenced), whose |J| |x| is the round-off of each row of K u,
+  // and what that product keeps between calls (solver/roundoff.hpp).
+  Mat     Jlast = nullptr;
+  boltnet::AbsMult roundoff;
   // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md): a converged step must balance
   // to this fraction of its force scale; MUMPS pivots below null_pivot_threshold ||A|| are null.
   PetscReal   equilibrium_rtol     = 1e-6;

@@ -159,33 +159,6 @@ PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
-// Jabs = |P| entry by entry: row i of |P| |x| bounds the terms summed in row i of K u, so that
-// 100 eps (|P| |x|)_i is the round-off of that row of the residual (solver/stepper.cpp).
-PetscErrorCode AbsoluteEntries(BoltnetAssembly a, Mat P)
-{
-  PetscBool   mpi;
-  Mat         parts[2];
-  PetscInt    nparts = 1;
-  PetscFunctionBeginUser;
-  if (!a->Jabs) PetscCall(MatDuplicate(P, MAT_COPY_VALUES, &a->Jabs));
-  else PetscCall(MatCopy(P, a->Jabs, SAME_NONZERO_PATTERN));
-  PetscCall(PetscObjectTypeCompare((PetscObject)a->Jabs, MATMPIAIJ, &mpi));
-  if (mpi) {
-    const PetscInt *colmap;
-    PetscCall(MatMPIAIJGetSeqAIJ(a->Jabs, &parts[0], &parts[1], &colmap));
-    nparts = 2;
-  } else parts[0] = a->Jabs;
-  for (PetscInt k = 0; k < nparts; ++k) {
-    PetscScalar *v;
-    MatInfo      info;
-    PetscCall(MatGetInfo(parts[k], MAT_LOCAL, &info));
-    PetscCall(MatSeqAIJGetArray(parts[k], &v));
-    for (PetscInt i = 0; i < (PetscInt)info.nz_used; ++i) v[i] = PetscAbsScalar(v[i]);
-    PetscCall(MatSeqAIJRestoreArray(parts[k], &v));
-  }
-  PetscFunctionReturn(0);
-}
-
 } // namespace
 
 // The Jacobian's nonzero pattern, counted exactly with MATPREALLOCATOR: each joint couples the 6
@@ -278,10 +251,13 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
   // object state, and PCSetUp then keeps the factorisation too.
   if (a->opt.stuck_linear && J == a->J && (P == J || P == a->Pfac) && js.jac_valid) {
-    PetscMPIInt changed = 0, any;
-    for (size_t k = 0; k < resp.size() && !changed; ++k) changed = std::memcmp(resp[k].tangent.data(), js.jac_tangent[k].data(), sizeof(Mat6)) != 0;
-    PetscCallMPI(MPIU_Allreduce(&changed, &any, 1, MPI_INT, MPI_LOR, a->comm));
-    if (!any) {
+    // Counted over all joints, for -info: how far the Jacobian is from the last one (a low-rank
+    // update of a kept factorisation pays only when few joints change: docs/performance.md).
+    PetscInt changed[2] = {0, (PetscInt)resp.size()}, total[2];
+    for (size_t k = 0; k < resp.size(); ++k) changed[0] += std::memcmp(resp[k].tangent.data(), js.jac_tangent[k].data(), sizeof(Mat6)) != 0;
+    PetscCallMPI(MPIU_Allreduce(changed, total, 2, MPIU_INT, MPI_SUM, a->comm));
+    PetscCall(PetscInfo(snes, "%" PetscInt_FMT " of the %" PetscInt_FMT " joints' tangents differ from the last Jacobian's\n", total[0], total[1]));
+    if (!total[0]) {
       ++js.jac_reused;
       if (P == a->Pfac) PetscCall(AssemblyLaggedFactorisation(a, J, P));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
@@ -323,7 +299,11 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
   PetscCall(MatZeroRows(M, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
   PetscCall(MatNorm(M, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
-  PetscCall(AbsoluteEntries(a, M));
+  if (a->Jlast != M) { // the round-off test's |J| |x| is computed from M itself (solver/roundoff.hpp)
+    PetscCall(PetscObjectReference((PetscObject)M));
+    PetscCall(MatDestroy(&a->Jlast));
+    a->Jlast = M;
+  }
   ++js.jac_assembled;
   js.jac_valid = (M == a->J) ? PETSC_TRUE : PETSC_FALSE;
   js.jac_tangent.resize(resp.size());

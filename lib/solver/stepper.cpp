@@ -101,24 +101,22 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
     }
   }
   if (*reason != SNES_CONVERGED_ITERATING || it == 0) PetscFunctionReturn(0);
-  Vec       X, F, ax, bound;
+  Vec       X, F, share, bound;
   PetscReal worst;
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(SNESGetFunction(snes, &F, nullptr, nullptr));
-  if (!a->Jabs) PetscFunctionReturn(0);
+  if (!a->Jlast) PetscFunctionReturn(0);
   // Row by row: |F_i| <= 100 eps (|J| |x|)_i, the round-off of the terms summed in that row. A row
   // of a soft part is not judged by the stiffest row (a loader spring, a joint's rotational
   // stiffness), nor a translation row by the size of the rotations.
-  PetscCall(VecDuplicate(X, &ax));
+  PetscCall(VecDuplicate(X, &share));
   PetscCall(VecDuplicate(X, &bound));
-  PetscCall(VecCopy(X, ax));
-  PetscCall(VecAbs(ax));
-  PetscCall(MatMult(a->Jabs, ax, bound));
+  PetscCall(AbsMultApply(&a->roundoff, a->Jlast, X, bound));
   PetscCall(VecScale(bound, 100.0 * PETSC_MACHINE_EPSILON));
   PetscCall(VecShift(bound, PETSC_SMALL * PETSC_MACHINE_EPSILON)); // rows with nothing in them
-  PetscCall(VecPointwiseDivide(ax, F, bound));
-  PetscCall(VecNorm(ax, NORM_INFINITY, &worst)); // the largest |F_i| / bound_i
-  PetscCall(VecDestroy(&ax));
+  PetscCall(VecPointwiseDivide(share, F, bound));
+  PetscCall(VecNorm(share, NORM_INFINITY, &worst)); // the largest |F_i| / bound_i
+  PetscCall(VecDestroy(&share));
   PetscCall(VecDestroy(&bound));
   if (worst <= 1) {
     Equilibrium eq;
