@@ -161,7 +161,8 @@ struct _p_BoltnetAssembly {
   Mat       Pfac         = nullptr; // created by AssemblySetUpSolver for the lagged solve only
   PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
   // When MUMPS cannot hold the factors in memory, factor again with them on disk (ICNTL(22) = 1):
-  // -interface_out_of_core; factors_on_disk once that happened (AssemblySetUpNullPivots sets it).
+  // -interface_out_of_core; factors_on_disk once that happened, or once a factorisation ran with
+  // the user's own -mat_mumps_icntl_22 1 (solver/equilibrium.cpp).
   PetscBool out_of_core     = PETSC_TRUE;
   PetscBool factors_on_disk = PETSC_FALSE;
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json

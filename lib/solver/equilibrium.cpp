@@ -264,6 +264,17 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// Factors kept on disk by the user's own -mat_mumps_icntl_22 1 count as on disk too: summary.json
+// says so, and a failure is not retried out of core nor told to go there.
+static PetscErrorCode NoteFactorsOnDisk(BoltnetAssembly a, Mat F)
+{
+  PetscInt icntl22;
+  PetscFunctionBeginUser;
+  PetscCall(MatMumpsGetIcntl(F, 22, &icntl22));
+  if (icntl22 == 1) a->factors_on_disk = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
 {
   KSP       ksp;
@@ -279,6 +290,7 @@ PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
   MatFactorType ftype;
   PetscCall(MatGetFactorType(F, &ftype));
   if (ftype == MAT_FACTOR_NONE) PetscFunctionReturn(0);
+  PetscCall(NoteFactorsOnDisk(a, F));
   PetscCall(MatMumpsGetIcntl(F, 24, &icntl24));
   if (icntl24 != 1) PetscFunctionReturn(0);
   PetscCall(MatMumpsGetInfog(F, 28, nnull)); // INFOG(28): null pivots found by the last factorisation
@@ -315,6 +327,7 @@ PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why, std::str
   PetscCall(PCFactorGetMatrix(pc, &F));
   PetscCall(MatGetFactorType(F, &ftype));
   if (ftype == MAT_FACTOR_NONE) PetscFunctionReturn(0);
+  PetscCall(NoteFactorsOnDisk(a, F));
   PetscCall(MatMumpsGetInfog(F, 1, &info1));
   PetscCall(MatMumpsGetInfog(F, 2, &info2));
   // -10 is a numerically singular matrix: a mechanism of the joints' states, which a smaller step
