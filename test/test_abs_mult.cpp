@@ -101,10 +101,10 @@ PetscErrorCode Check(boltnet::AbsMult *c, Mat A, Mat Aabs, unsigned seed, PetscR
 
 int main(int argc, char **argv)
 {
-  PetscMPIInt     rank;
-  Mat             A, Aabs, B, Babs, Abaij;
+  PetscMPIInt      rank;
+  Mat              A, Aabs, B, Babs, Abaij;
   boltnet::AbsMult c;
-  PetscReal       w[5];
+  PetscReal        w[5];
   PetscCall(PetscInitialize(&argc, &argv, nullptr, "Checks |A| |x| (solver/roundoff.hpp) against an explicit |A|"));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));
   PetscCall(Build(PETSC_COMM_WORLD, 40 + 13 * rank, 9, 1u, &A, &Aabs));

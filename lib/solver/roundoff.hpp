@@ -21,8 +21,8 @@ struct AbsMult {
 
 // y = |A| |x| for a MATSEQAIJ or MATMPIAIJ A (x and y laid out as A's columns and rows); other
 // types are converted to AIJ for the call. Collective on A. The sums run in MatMult's order (each
-// row's local columns, then its off-process ones), so the result is |A| |x| to the last bit of a
-// MatMult with an explicit |A|.
+// row's local columns, then its off-process ones): test/test_abs_mult.cpp finds the result equal
+// to a MatMult with an explicit |A| to the last bit.
 PetscErrorCode AbsMultApply(AbsMult *c, Mat A, Vec x, Vec y);
 PetscErrorCode AbsMultDestroy(AbsMult *c);
 
