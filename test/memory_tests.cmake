@@ -51,22 +51,24 @@ boltnet_expect(factor_no_out_of_core 1 --status 3
 # The user's own -mat_mumps_icntl_22 1 keeps the factors on disk from the start: summary.json says so
 # (the reference: MUMPS's ICNTL(22) as given, and the closed-form load shares of the run); under the
 # 1 MB cap the failure is not retried on disk again, and the advice does not send the user there.
-set(out ${BOLTNET_OUT}/factor_user_out_of_core_np2)
-add_test(NAME factor_user_out_of_core_np2
-  COMMAND ${BOLTNET_EXPECT} --match "1 steps converged \\(0 cut-backs\\)" --reject "factoring again" --
-          ${BOLTNET_MPIRUN} 2 --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
-          -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_22 1)
-set_tests_properties(factor_user_out_of_core_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_SETUP factor_user_out_of_core_np2)
-add_test(NAME factor_user_out_of_core_summary_np2
-  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['status']=='converged' and s['factors_on_disk'] else 'summary.json: factors_on_disk ' + str(s['factors_on_disk']))" ${out}/summary.json)
-add_test(NAME factor_user_out_of_core_load_shares_np2
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
-set_tests_properties(factor_user_out_of_core_summary_np2 factor_user_out_of_core_load_shares_np2 PROPERTIES FIXTURES_REQUIRED factor_user_out_of_core_np2)
-boltnet_expect(factor_user_out_of_core_cap 1 --status 3
-  --match "FAILED: Load step 1 from load factor 0 to 1: MUMPS could not factor the 26472-dof Jacobian with its factors on disk \\(INFOG\\(1\\) = -19"
-  --reject "factoring again" --reject "keep the factors on disk" --reject "cutting the increment" --
-  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_user_out_of_core_cap
-  -output_fields false -patch_condense false -mat_mumps_icntl_22 1 -mat_mumps_icntl_23 1)
+foreach(ranks 1 2 3)
+  set(out ${BOLTNET_OUT}/factor_user_out_of_core_np${ranks})
+  add_test(NAME factor_user_out_of_core_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "1 steps converged \\(0 cut-backs\\)" --reject "factoring again" --
+            ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
+            -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_22 1)
+  set_tests_properties(factor_user_out_of_core_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_SETUP factor_user_out_of_core_np${ranks})
+  add_test(NAME factor_user_out_of_core_summary_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['status']=='converged' and s['factors_on_disk'] else 'summary.json: factors_on_disk ' + str(s['factors_on_disk']))" ${out}/summary.json)
+  add_test(NAME factor_user_out_of_core_load_shares_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+  set_tests_properties(factor_user_out_of_core_summary_np${ranks} factor_user_out_of_core_load_shares_np${ranks} PROPERTIES FIXTURES_REQUIRED factor_user_out_of_core_np${ranks})
+  boltnet_expect(factor_user_out_of_core_cap ${ranks} --status 3
+    --match "FAILED: Load step 1 from load factor 0 to 1: MUMPS could not factor the 26472-dof Jacobian with its factors on disk \\(INFOG\\(1\\) = -19"
+    --reject "factoring again" --reject "keep the factors on disk" --reject "cutting the increment" --
+    ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
+    -output_dir ${BOLTNET_OUT}/factor_user_out_of_core_cap_np${ranks} -output_fields false -patch_condense false -mat_mumps_icntl_22 1 -mat_mumps_icntl_23 1)
+endforeach()
 
 # An allocation MUMPS cannot get (INFOG(1) = -13): ICNTL(14) = 2,000,000 makes MUMPS ask for 20,000
 # times its in-core workspace estimate, hundreds of GB, which the kernel refuses (its default

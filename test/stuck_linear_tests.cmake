@@ -85,3 +85,18 @@ add_test(NAME bench_plate_grid_stuck_linear_tiny
           -- ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/bench-plate-grid --size tiny --ranks 1 --stuck-linear
           --boltnet $<TARGET_FILE:boltnet_driver> --mpiexec ${MPIEXEC_EXECUTABLE} --out ${BOLTNET_OUT}/bench-stuck-tiny.md)
 set_tests_properties(bench_plate_grid_stuck_linear_tiny PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
+
+# -info counts, for each Jacobian, the joints whose tangent differs from the last Jacobian's, summed
+# over the ranks. References: a linear spring's tangent is its constant stiffness, so lap-rows' 10
+# springs give "0 of the 10" on every rank count (the total, not a rank's share); fig3c's one bolt
+# slides and bears, where its tangent follows the jump (docs/joint-laws.md), so "1 of the 1" appears.
+foreach(ranks 1 2 3)
+  boltnet_expect(jacobian_tangent_count_springs ${ranks} --match "0 of the 10 joints' tangents differ from the last Jacobian's"
+    --reject "[1-9][0-9]* of the 10 joints' tangents" --
+    ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
+    -output_dir ${BOLTNET_OUT}/jacobian_tangent_count_springs_np${ranks} -output_fields false -load_steps 3 -info)
+endforeach()
+boltnet_expect(jacobian_tangent_count_bolt 1 --match "1 of the 1 joints' tangents differ from the last Jacobian's"
+  --match "0 of the 1 joints' tangents differ from the last Jacobian's" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/jacobian_tangent_count_bolt
+  -output_fields false -info)

@@ -66,12 +66,10 @@ PetscErrorCode AbsMultApply(AbsMult *c, Mat A, Vec x, Vec y)
   const PetscScalar *xa;
   PetscScalar       *ya;
   if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(A, &Ad, &Ao, &colmap));
-  if (Ao) {
+  if (Ao) { // the scatter started first, so that the local rows' sums overlap the messages
     PetscObjectState pattern;
     PetscCall(MatGetNonzeroState(A, &pattern));
     if (c->A != A || c->pattern != pattern) PetscCall(BuildGhostScatter(c, A, Ao, colmap, x));
-  }
-  if (Ao) { // started first, so that the local rows' sums overlap the messages
     PetscCall(VecScatterBegin(c->scatter, x, c->ghost, INSERT_VALUES, SCATTER_FORWARD));
   }
   PetscCall(VecGetArrayRead(x, &xa));
