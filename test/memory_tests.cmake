@@ -76,8 +76,65 @@ endforeach()
 # size from INFOG(2) (millions of reals when negative, MUMPS users' guide). Out of core MUMPS sizes
 # its workspace from the fronts alone and gets it: the step converges to the closed-form load
 # shares. Where a kernel grants the first allocation (overcommit always), the test is skipped.
+# -interface_memory_mb 1e9 (a petabyte) lets the factorisation try in core, against MUMPS's own
+# estimate, which says it cannot (factor_memory_estimate_* below).
 set(out ${BOLTNET_OUT}/factor_out_of_memory_np1)
 add_test(NAME factor_out_of_memory_np1
-  COMMAND sh -c "\"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -patch_condense false -mat_mumps_icntl_14 2000000 > \"$2.txt\" 2>&1; rc=$?; cat \"$2.txt\"; if ! grep -q 'INFOG(1) = -13' \"$2.txt\" && [ $rc = 0 ]; then echo 'the kernel granted the allocation'; exit 77; fi; [ $rc = 0 ] && grep -Eq 'load step 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -13, INFOG\\(2\\) = -[0-9]+\\): out of memory, an allocation of [0-9.e+]+ GB failed; factoring again with the factors on disk' \"$2.txt\" && grep -q '1 steps converged (0 cut-backs)' \"$2.txt\" && \"$3\" \"$4\" \"$2/joints.csv\" 21820 72000 20 1.27 20"
+  COMMAND sh -c "\"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -patch_condense false -mat_mumps_icntl_14 2000000 -interface_memory_mb 1e9 > \"$2.txt\" 2>&1; rc=$?; cat \"$2.txt\"; if ! grep -q 'INFOG(1) = -13' \"$2.txt\" && [ $rc = 0 ]; then echo 'the kernel granted the allocation'; exit 77; fi; [ $rc = 0 ] && grep -Eq 'load step 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -13, INFOG\\(2\\) = -[0-9]+\\): out of memory, an allocation of [0-9.e+]+ GB failed; factoring again with the factors on disk' \"$2.txt\" && grep -q '1 steps converged (0 cut-backs)' \"$2.txt\" && \"$3\" \"$4\" \"$2/joints.csv\" 21820 72000 20 1.27 20"
           $<TARGET_FILE:boltnet_driver> ${BOLTNET_SCENES}/lap-rows.yaml ${out} ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py)
 set_tests_properties(factor_out_of_memory_np1 PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" SKIP_RETURN_CODE 77)
+
+# Factors on disk from the start when MUMPS's analysis says they will not fit (docs/solver.md, "No
+# null pivot"): its in-core estimate (INFO(15), summed over a node's ranks) against what the node
+# has, or -interface_memory_mb. The reference that they really went to disk is MUMPS's own: under a
+# 30 MB cap on its working memory per rank (-mat_mumps_icntl_23 30) lap-rows' factorisation fails in
+# core (factor_out_of_core_* above: INFOG(1) = -19) and fits on disk; here it fits at the first
+# attempt, with no retry, and converges to the closed-form load shares. 30 MB per rank is under
+# MUMPS's in-core estimate on 1, 2 and 3 ranks (55, 78 and 106 MB summed over the ranks).
+foreach(ranks 1 2 3)
+  set(out ${BOLTNET_OUT}/factor_memory_estimate_np${ranks})
+  math(EXPR mb "30 * ${ranks}")
+  add_test(NAME factor_memory_estimate_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "MUMPS's analysis estimates [0-9]+ MB to factor the 26472-dof Jacobian in memory, more than the ${mb} MB given by -interface_memory_mb: the factors go to disk"
+            --match "1 steps converged \\(0 cut-backs\\)" --reject "factoring again" --reject "INFOG\\(1\\) = -19" --
+            ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
+            -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 30 -interface_memory_mb ${mb})
+  set_tests_properties(factor_memory_estimate_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_SETUP factor_memory_estimate_np${ranks})
+  add_test(NAME factor_memory_estimate_summary_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['status']=='converged' and s['factors_on_disk'] and s['cutbacks']==0 else 'summary.json: factors_on_disk ' + str(s['factors_on_disk']))" ${out}/summary.json)
+  add_test(NAME factor_memory_estimate_load_shares_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+  set_tests_properties(factor_memory_estimate_summary_np${ranks} factor_memory_estimate_load_shares_np${ranks} PROPERTIES FIXTURES_REQUIRED factor_memory_estimate_np${ranks})
+endforeach()
+# With what the node really has (MemAvailable): ICNTL(14) = 2,000,000 makes MUMPS's estimate
+# hundreds of GB (factor_out_of_memory_np1 above), more than any node here has, so the factors go to
+# disk before any allocation fails; the estimate of lap-rows as it is, 55 MB, leaves them in memory.
+set(out ${BOLTNET_OUT}/factor_memory_available_np1)
+boltnet_expect(factor_memory_available 1
+  --match "more than the [0-9]+ MB the node has available: the factors go to disk"
+  --match "1 steps converged \\(0 cut-backs\\)" --reject "INFOG\\(1\\) = -13" --reject "factoring again" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${out}
+  -output_fields false -patch_condense false -mat_mumps_icntl_14 2000000)
+add_test(NAME factor_memory_available_load_shares_np1
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+set_tests_properties(factor_memory_available_load_shares_np1 PROPERTIES DEPENDS factor_memory_available_np1)
+boltnet_expect(factor_memory_fits 1 --match "MUMPS's analysis: [0-9]+ MB in core, [0-9]+ MB out of core, on the node that needs most against the [0-9]+ MB it has available"
+  --match "1 steps converged" --reject "the factors go to disk" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_memory_fits
+  -output_fields false -patch_condense false -info :mat)
+# Who decides: -interface_out_of_core false, or the user's own -mat_mumps_icntl_22 0, keeps the
+# factors in memory whatever the estimate, and the 30 MB cap then fails the run as MUMPS says (-19),
+# with no retry; the advice names the option that would put them on disk.
+boltnet_expect(factor_memory_estimate_off 1 --status 3
+  --match "INFOG\\(1\\) = -19" --match "or keep the factors on disk \\(-interface_out_of_core\\)"
+  --reject "the factors go to disk" --reject "factoring again" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_memory_estimate_off
+  -output_fields false -patch_condense false -mat_mumps_icntl_23 30 -interface_memory_mb 30 -interface_out_of_core false)
+boltnet_expect(factor_memory_estimate_user 1 --status 3
+  --match "INFOG\\(1\\) = -19" --match "or keep the factors on disk \\(-mat_mumps_icntl_22 1\\)"
+  --reject "the factors go to disk" --reject "factoring again" --reject "with its factors on disk" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_memory_estimate_user
+  -output_fields false -patch_condense false -mat_mumps_icntl_23 30 -interface_memory_mb 30 -mat_mumps_icntl_22 0)
+boltnet_expect(factor_memory_negative 1 --fail --max-lines 1 --match "-interface_memory_mb -5\\.? must be >= 0" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_memory_negative
+  -output_fields false -interface_memory_mb -5)

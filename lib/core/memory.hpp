@@ -22,4 +22,10 @@ struct MemoryMark {
 // ranks of comm. Collective.
 PetscErrorCode ResidentMemory(MPI_Comm comm, bool peak, RankRange *mb);
 
+// What this process's node can still give to new allocations, in MB: /proc/meminfo's MemAvailable
+// (the kernel's estimate of what can be allocated without swapping), within the limit of the
+// process's cgroup when it has one (cgroup v2's memory.max less memory.current, as a batch system's
+// job allocation sets). 0 where neither can be read. Not collective.
+double AvailableMemory();
+
 } // namespace boltnet

@@ -160,10 +160,14 @@ struct _p_BoltnetAssembly {
   PetscInt  refactor_its = 25;
   Mat       Pfac         = nullptr; // created by AssemblySetUpSolver for the lagged solve only
   PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
-  // When MUMPS cannot hold the factors in memory, factor again with them on disk (ICNTL(22) = 1):
-  // -interface_out_of_core; factors_on_disk once that happened, or once a factorisation ran with
-  // the user's own -mat_mumps_icntl_22 1 (solver/equilibrium.cpp).
+  // Factors on disk (MUMPS ICNTL(22) = 1) when MUMPS's analysis estimates more memory than a node
+  // has (memory_mb, 0: what the operating system says is available), or when a factorisation runs
+  // out of memory: -interface_out_of_core; factors_on_disk once that happened, or once a
+  // factorisation ran with the user's own -mat_mumps_icntl_22 1 (solver/equilibrium.cpp). That
+  // option, given either way, decides alone (storage_given): boltnet neither chooses nor retries.
   PetscBool out_of_core     = PETSC_TRUE;
+  PetscBool storage_given   = PETSC_FALSE;
+  PetscReal memory_mb       = 0;
   PetscBool factors_on_disk = PETSC_FALSE;
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian

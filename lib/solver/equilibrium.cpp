@@ -1,6 +1,7 @@
 // Trusting "converged": equilibrium against the problem's own force scale, and singular Jacobians
 // (mechanisms) named by patch, dof and joint (docs/solver.md, "When is a step converged").
 #include "core/guard.hpp"
+#include "core/memory.hpp"
 #include "network/internal.hpp"
 
 #include <algorithm>
@@ -245,6 +246,91 @@ static PetscErrorCode MumpsLU(BoltnetAssembly a, KSP *ksp, PC *pc, PetscBool *mu
   PetscFunctionReturn(0);
 }
 
+// Factors on disk from the start when they will not fit in memory (docs/solver.md, "No null
+// pivot"). MUMPS's analysis knows what its in-core factorisation will take on each rank (INFO(15),
+// in MB, the workspace relaxation ICNTL(14) included), and ICNTL(22) is read only by the
+// factorisation that follows (MUMPS users' guide, ICNTL(22)); so between the two, the ranks that
+// share a node add up their estimates and compare them with what the node has. A factorisation in
+// core that fails for want of memory can still be factored again on disk (stepper.cpp), but on the
+// full wing-fuselage junction that retry held about 4 GB more than a run on disk from the start and
+// was killed (docs/performance.md). Not called where the user's own -mat_mumps_icntl_22 decides.
+static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
+{
+  PetscInt    info1, icntl22, incore, ooc;
+  MPI_Comm    node;
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCall(MatMumpsGetInfog(F, 1, &info1));
+  if (info1 < 0) PetscFunctionReturn(0); // the analysis failed: the factorisation reports it
+  PetscCall(MatMumpsGetIcntl(F, 22, &icntl22));
+  PetscCall(MatMumpsGetInfo(F, 15, &incore)); // this rank's estimate in core, MB
+  PetscCall(MatMumpsGetInfo(F, 17, &ooc));    // and out of core
+  double mine[2] = {(double)incore, (double)ooc}, need[2];
+  PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
+  PetscCallMPI(MPI_Comm_split_type(a->comm, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node));
+  PetscCallMPI(MPI_Allreduce(mine, need, 2, MPI_DOUBLE, MPI_SUM, node));
+  double here = a->memory_mb > 0 ? a->memory_mb : AvailableMemory(), have;
+  PetscCallMPI(MPI_Allreduce(&here, &have, 1, MPI_DOUBLE, MPI_MIN, node));
+  PetscCallMPI(MPI_Comm_free(&node));
+  // The node that is shortest of memory speaks for all: ICNTL(22) holds for every rank.
+  struct {
+    double      ratio;
+    PetscMPIInt rank;
+  } shortest{have > 0 ? need[0] / have : 0.0, rank}, worst;
+  PetscCallMPI(MPI_Allreduce(&shortest, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, a->comm));
+  double report[3] = {need[0], need[1], have};
+  PetscCallMPI(MPI_Bcast(report, 3, MPI_DOUBLE, worst.rank, a->comm));
+  PetscCall(PetscInfo(F, "MUMPS's analysis: %.0f MB in core, %.0f MB out of core, on the node that needs most against the %.0f MB it has%s\n", report[0], report[1], report[2], a->memory_mb > 0 ? " (-interface_memory_mb)" : " available"));
+  if (icntl22 == 1 || report[2] <= 0 || worst.ratio <= 1) PetscFunctionReturn(0);
+  PetscCall(MatMumpsSetIcntl(F, 22, 1));
+  a->factors_on_disk = PETSC_TRUE;
+  PetscInt N;
+  PetscCall(MatGetSize(F, &N, nullptr));
+  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates %.0f MB to factor the %" PetscInt_FMT "-dof Jacobian in memory, more than the %.0f MB %s: the factors go to disk, %.0f MB stay in memory (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false keeps them in memory)\n", report[0], N, report[2],
+                        a->memory_mb > 0 ? "given by -interface_memory_mb" : "the node has available", report[1]));
+  PetscFunctionReturn(0);
+}
+
+// MUMPS's symbolic factorisation, then the choice above: F's own symbolic operation, wrapped
+// (MatSetOperation) so that every analysis PCSetUp makes, the first and any after a change of
+// nonzero pattern, is followed by the choice before its numeric factorisation.
+struct StorageChoice {
+  PetscErrorCode (*symbolic)(Mat, Mat, IS, IS, const MatFactorInfo *);
+  BoltnetAssembly a;
+};
+
+static PetscErrorCode SymbolicThenChooseStorage(Mat F, Mat A, IS row, IS col, const MatFactorInfo *info)
+{
+  PetscContainer container;
+  StorageChoice *choice;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_storage_choice", (PetscObject *)&container));
+  PetscCall(PetscContainerGetPointer(container, (void **)&choice));
+  PetscCall(choice->symbolic(F, A, row, col, info));
+  PetscCall(ChooseFactorStorage(choice->a, F));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode WrapSymbolic(BoltnetAssembly a, Mat F)
+{
+  PetscContainer container;
+  StorageChoice *choice;
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_storage_choice", (PetscObject *)&container));
+  if (container) PetscFunctionReturn(0); // this factor's analysis is wrapped already
+  PetscCall(PetscNew(&choice));
+  choice->a = a;
+  PetscCall(MatGetOperation(F, MATOP_LUFACTOR_SYMBOLIC, (void (**)(void)) & choice->symbolic));
+  PetscCheck(choice->symbolic, a->comm, PETSC_ERR_PLIB, "MUMPS's factor has no symbolic LU factorisation");
+  PetscCall(PetscContainerCreate(a->comm, &container));
+  PetscCall(PetscContainerSetPointer(container, choice));
+  PetscCall(PetscContainerSetUserDestroy(container, PetscContainerUserDestroyDefault));
+  PetscCall(PetscObjectCompose((PetscObject)F, "boltnet_storage_choice", (PetscObject)container));
+  PetscCall(PetscContainerDestroy(&container));
+  PetscCall(MatSetOperation(F, MATOP_LUFACTOR_SYMBOLIC, (void (*)(void))SymbolicThenChooseStorage));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
 {
   KSP       ksp;
@@ -261,6 +347,7 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   PetscCall(MatMumpsSetIcntl(F, 24, 1));                   // null pivot row detection
   PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold)); // null below this x ||A_pre|| (CNTL(3) > 0: relative)
   if (a->factors_on_disk) PetscCall(MatMumpsSetIcntl(F, 22, 1)); // out-of-core factors (MUMPS_OOC_TMPDIR)
+  else if (a->out_of_core) PetscCall(WrapSymbolic(a, F));        // or out of core if they will not fit
   PetscFunctionReturn(0);
 }
 
@@ -346,13 +433,13 @@ PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why, std::str
     const double bytes = (info2 < 0 ? -1e6 * (double)info2 : (double)info2) * sizeof(PetscScalar);
     m << "out of memory, an allocation of " << bytes / 1e9 << " GB failed";
     d << "A smaller load step does not change that; run on more ranks (MUMPS distributes its factors) or condense more patches onto their ports (-patch_condense_ratio)";
-    if (!a->factors_on_disk) d << ", or keep the factors on disk (-interface_out_of_core)";
+    if (!a->factors_on_disk) d << ", or keep the factors on disk (" << (a->storage_given ? "-mat_mumps_icntl_22 1" : "-interface_out_of_core") << ")";
     break;
   }
   case -19:
     m << "-mat_mumps_icntl_23 caps MUMPS's working memory per rank below what the factorisation needs";
     d << "Raise or remove the cap";
-    if (!a->factors_on_disk) d << ", or keep the factors on disk (-interface_out_of_core)";
+    if (!a->factors_on_disk) d << ", or keep the factors on disk (" << (a->storage_given ? "-mat_mumps_icntl_22 1" : "-interface_out_of_core") << ")";
     break;
   case -8: case -9: case -11: case -12: case -14: case -15: case -17: case -20:
     m << "MUMPS's estimate of its workspace was short";

@@ -29,10 +29,14 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscInt    isolve    = a->lagged ? 1 : 0;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
   PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes) or lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations): docs/solver.md", "AssemblySetUpSolver", isolves, 2, isolves[isolve], &isolve, nullptr));
-  PetscCall(PetscOptionsBool("-interface_out_of_core", "When MUMPS cannot hold the factors in memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23), factor again with them on disk (ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) instead of stopping: docs/solver.md", "AssemblySetUpSolver", a->out_of_core, &a->out_of_core, nullptr));
+  PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->out_of_core, &a->out_of_core, nullptr));
+  PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->memory_mb, &a->memory_mb, nullptr));
   PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->refactor_its, &a->refactor_its, nullptr));
   PetscOptionsEnd();
   PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
+  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->storage_given));
+  if (a->storage_given) a->out_of_core = PETSC_FALSE;
+  PetscCheck(a->memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->memory_mb);
   a->lagged = isolve == 1 ? PETSC_TRUE : PETSC_FALSE;
   if (a->lagged && !a->Pfac) { // the lagged solve's own matrix; the direct solve factors J itself
     PetscCall(MatDuplicate(a->J, MAT_DO_NOT_COPY_VALUES, &a->Pfac));
