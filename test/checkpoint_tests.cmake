@@ -16,6 +16,14 @@ add_test(NAME restart_killed_fig3a_np2
 set_tests_properties(restart_killed_fig3a_np1 PROPERTIES PROCESSORS 1 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np1)
 set_tests_properties(restart_killed_fig3a_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np2)
 
+# The secant predictor's other point survives a restart (docs/solver.md, "The first iterate of a
+# step"): fig3c, whose steps 91 to 120 take one Newton iteration from the prediction and two or
+# three without, killed after step 100 (its only checkpoint) and restarted, repeats the uninterrupted
+# run's Newton iterations step by step. A restart that lost the point starts step 101 from the
+# converged solution alone and records 2 (measured: the test then fails).
+add_test(NAME restart_killed_fig3c_np1
+  COMMAND ${_restart} 1 1 100 ${BOLTNET_OUT}/fig3c_np1 ${BOLTNET_OUT}/restart_fig3c_np1 1e-12 -- -scene ${BOLTNET_SCENES}/fig3c.yaml)
+set_tests_properties(restart_killed_fig3c_np1 PROPERTIES PROCESSORS 1 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3c_np1)
 # Another number of ranks: the checkpoint's arrays do not depend on the ranks, so a run of the chain
 # killed on 2 ranks goes on on 3 and ends with the uninterrupted 2-rank run's results to the rank
 # tolerance of the chain (1e-10, as chain_ranks_1_vs_*). 150 steps: the kill comes long before the end.

@@ -30,8 +30,9 @@ foreach(ranks 1 2)
   progress_test(fig3c ${ranks} ${BOLTNET_SCENES}/fig3c.yaml 180)
   # Cut-backs: with 3 steps per segment and 2 Newton iterations per solve, the steps in which the
   # joint goes from stick through sliding into bearing are cut back (7 halvings, 27 converged steps
-  # for the 9 nominal ones) and reached by sub-steps.
-  progress_test(fig3c_cutbacks ${ranks} ${BOLTNET_SCENES}/fig3c.yaml 9 -load_steps 3 -snes_max_it 2)
+  # for the 9 nominal ones) and reached by sub-steps. Without the secant predictor: with it, the
+  # 2 iterations suffice and nothing is cut back.
+  progress_test(fig3c_cutbacks ${ranks} ${BOLTNET_SCENES}/fig3c.yaml 9 -load_steps 3 -snes_max_it 2 -load_predictor false)
 endforeach()
 foreach(ranks 1 2 3)
   # fig3b: four contact joints on shell parts cut into patches over the ranks, bearing in turn

@@ -89,13 +89,14 @@ static PetscErrorCode Checksum(Vec v, std::uint64_t tag, std::uint64_t *sum)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode DataChecksum(Vec x, Vec j, Vec s, std::string *hex)
+PetscErrorCode DataChecksum(Vec x, Vec j, Vec s, Vec xp, std::string *hex)
 {
-  std::uint64_t c[3];
+  std::uint64_t c[4];
   PetscFunctionBeginUser;
   PetscCall(Checksum(x, 1, &c[0]));
   PetscCall(Checksum(j, 2, &c[1]));
   PetscCall(Checksum(s, 3, &c[2]));
+  PetscCall(Checksum(xp, 4, &c[3]));
   Hasher h;
   for (std::uint64_t v : c) h.Add(v);
   *hex = h.Hex();
@@ -118,15 +119,21 @@ namespace {
 using namespace ckpt;
 
 // The arrays of the committed state, in the file's order.
-PetscErrorCode StateVectors(BoltnetAssembly a, Vec *x, Vec *j, Vec *s)
+PetscErrorCode StateVectors(BoltnetAssembly a, Vec *x, Vec *j, Vec *s, Vec *xp)
 {
   const JointSet &js = a->joints;
   VecScatter      sc;
   PetscFunctionBeginUser;
   PetscCall(CreateNatural(a, x));
+  PetscCall(CreateNatural(a, xp));
+  PetscCall(PetscObjectSetName((PetscObject)*xp, "previous_solution"));
   PetscCall(NaturalScatter(a, *x, &sc));
   PetscCall(VecScatterBegin(sc, a->X, *x, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(sc, a->X, *x, INSERT_VALUES, SCATTER_FORWARD));
+  if (a->has_prev) { // the same layout: the same scatter
+    PetscCall(VecScatterBegin(sc, a->Xprev, *xp, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(sc, a->Xprev, *xp, INSERT_VALUES, SCATTER_FORWARD));
+  } else PetscCall(VecSet(*xp, 0.0));
   PetscCall(VecScatterDestroy(&sc));
 
   PetscCall(VecCreate(a->comm, j));
@@ -165,7 +172,7 @@ PetscErrorCode StateVectors(BoltnetAssembly a, Vec *x, Vec *j, Vec *s)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode WriteFile(MPI_Comm comm, const std::string &path, Saved &s, Vec x, Vec j, Vec st)
+PetscErrorCode WriteFile(MPI_Comm comm, const std::string &path, Saved &s, Vec x, Vec j, Vec st, Vec xp)
 {
   ViewerHold h;
   PetscFunctionBeginUser;
@@ -173,6 +180,7 @@ PetscErrorCode WriteFile(MPI_Comm comm, const std::string &path, Saved &s, Vec x
   PetscCall(VecView(x, h.v));
   PetscCall(VecView(j, h.v));
   PetscCall(VecView(st, h.v));
+  PetscCall(VecView(xp, h.v));
   PetscErrorCode ierr = 0;
   ForEach(
     s, [&](const char *n, const std::string &v) { if (!ierr) ierr = PetscViewerHDF5WriteAttribute(h.v, "/", n, PETSC_STRING, v.c_str()); },
@@ -211,7 +219,7 @@ std::string Commit(const std::string &tmp, const std::string &file)
 
 PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, const Output &out, const std::string &file)
 {
-  Vec   x, j, st;
+  Vec   x, j, st, xp;
   Saved s;
   PetscFunctionBeginUser;
   PetscCheck(!a->steps.empty(), a->comm, PETSC_ERR_ORDER, "A checkpoint is written after a converged step");
@@ -222,6 +230,7 @@ PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, 
   s.cutbacks = a->total_cutbacks, s.jac_assembled = a->joints.jac_assembled, s.jac_reused = a->joints.jac_reused;
   s.frozen_joint_steps = a->joints.frozen_joint_steps, s.joint_steps = a->joints.joint_steps, s.released = a->joints.released;
   s.load = a->lambda, s.force_scale_seen = a->force_scale_seen, s.last_increment = a->joints.last_increment;
+  s.has_prev = a->has_prev ? 1 : 0, s.prev_load = a->has_prev ? a->lambda_prev : 0;
   // The most loaded joint so far is rank 0's (OutputStep); every rank writes the same attributes.
   PetscInt  mi[2] = {out.most_joint, out.most_step};
   PetscReal mr[2] = {out.most_force, out.most_load};
@@ -230,16 +239,17 @@ PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, 
   s.most_joint = mi[0], s.most_step = mi[1], s.most_force = mr[0], s.most_load = mr[1];
   PetscCheck(s.options.size() < 60000, a->comm, PETSC_ERR_SUP, "The options of this run take %zu characters: more than a checkpoint attribute holds (60000)", s.options.size());
 
-  PetscCall(StateVectors(a, &x, &j, &st));
-  PetscCall(DataChecksum(x, j, st, &s.data_checksum));
+  PetscCall(StateVectors(a, &x, &j, &st, &xp));
+  PetscCall(DataChecksum(x, j, st, xp, &s.data_checksum));
   s.scalars_checksum = ScalarsChecksum(s);
   const std::string tmp = file + ".tmp";
   ErrorLog          log;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // HDF5's own error stack: the message below says it
   PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
-  PetscErrorCode ierr = WriteFile(a->comm, tmp, s, x, j, st);
+  PetscErrorCode ierr = WriteFile(a->comm, tmp, s, x, j, st, xp);
   PetscCall(PetscPopErrorHandler());
   PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&xp));
   PetscCall(VecDestroy(&j));
   PetscCall(VecDestroy(&st));
   // The file is closed on every rank: rank 0 finishes it, or removes it after an error on any rank.

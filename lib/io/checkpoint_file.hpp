@@ -18,7 +18,8 @@
 namespace boltnet {
 namespace ckpt {
 
-constexpr const char *kFormat = "boltnet checkpoint 1";
+// Format 2 adds the secant predictor's point (previous_solution, previous_load, has_previous).
+constexpr const char *kFormat = "boltnet checkpoint 2";
 // A joint's row: id, committed slip (t1, t2) and state, utilization now and at the step before
 // (AssemblyFreezeStuck), and the accepted response that joints.csv and the fields show: state,
 // bearing, force (6), jump (6).
@@ -30,8 +31,8 @@ struct Saved {
   std::string format, scene, options, parts, joints, bcs, layout, data_checksum, scalars_checksum;
   PetscInt    ranks = 0, npatches = 0, ndof = 0, njoints = 0, nsteps = 0, ntargets = 0, target = 0, halved = 0;
   PetscInt    cutbacks = 0, jac_assembled = 0, jac_reused = 0, frozen_joint_steps = 0, joint_steps = 0, released = 0;
-  PetscInt    most_joint = -1, most_step = 0;
-  PetscReal   load = 0, start = 0, sub = 0, force_scale_seen = 0, last_increment = 0, most_force = -1, most_load = 0;
+  PetscInt    most_joint = -1, most_step = 0, has_prev = 0;
+  PetscReal   load = 0, start = 0, sub = 0, force_scale_seen = 0, last_increment = 0, most_force = -1, most_load = 0, prev_load = 0;
 };
 
 // The scalars by name, for the writer, the reader and the checksum (which covers all but itself).
@@ -44,9 +45,10 @@ void ForEach(T &s, S text, I ints, R reals)
   ints("steps", s.nsteps), ints("path_targets", s.ntargets), ints("path_target", s.target), ints("path_halved", s.halved);
   ints("cutbacks", s.cutbacks), ints("jacobians_assembled", s.jac_assembled), ints("jacobians_reused", s.jac_reused);
   ints("frozen_joint_steps", s.frozen_joint_steps), ints("joint_steps", s.joint_steps), ints("released", s.released);
-  ints("most_loaded_joint", s.most_joint), ints("most_loaded_step", s.most_step);
+  ints("most_loaded_joint", s.most_joint), ints("most_loaded_step", s.most_step), ints("has_previous", s.has_prev);
   reals("load", s.load), reals("path_start", s.start), reals("path_sub", s.sub), reals("force_scale_seen", s.force_scale_seen);
   reals("last_increment", s.last_increment), reals("most_loaded_force", s.most_force), reals("most_loaded_load", s.most_load);
+  reals("previous_load", s.prev_load);
 }
 
 std::string ScalarsChecksum(Saved &s);
@@ -68,8 +70,8 @@ PetscErrorCode CreateNatural(BoltnetAssembly a, Vec *xnat);
 PetscErrorCode NaturalScatter(BoltnetAssembly a, Vec xnat, VecScatter *sc);
 // The row of each local joint (a->joints order) among the joints sorted by id.
 std::vector<PetscInt> JointRows(BoltnetAssembly a);
-// The checksum (hex) of the three arrays.
-PetscErrorCode DataChecksum(Vec x, Vec j, Vec s, std::string *hex);
+// The checksum (hex) of the four arrays: the solution, the joints, the steps and the solution before.
+PetscErrorCode DataChecksum(Vec x, Vec j, Vec s, Vec xp, std::string *hex);
 // Rank 0's text on every rank.
 PetscErrorCode ShareText(MPI_Comm comm, std::string *text);
 

@@ -77,17 +77,18 @@ PetscErrorCode CreateArray(MPI_Comm comm, PetscInt bs, PetscInt n, Vec *v)
   PetscFunctionReturn(0);
 }
 
-PetscErrorCode ReadArrays(PetscViewer v, const Saved &s, Vec x, Vec j, Vec st)
+PetscErrorCode ReadArrays(PetscViewer v, const Saved &s, Vec x, Vec j, Vec st, Vec xp)
 {
   PetscFunctionBeginUser;
   PetscCall(ReadArray(v, "solution", 6, s.ndof, x));
+  PetscCall(ReadArray(v, "previous_solution", 6, s.ndof, xp));
   PetscCall(ReadArray(v, "joints", kRow, kRow * s.njoints, j));
   PetscCall(ReadArray(v, "steps", kStepRow, kStepRow * s.nsteps, st));
   PetscFunctionReturn(0);
 }
 
 // The checked file into the assembly: the solution, each local joint's row, the steps and scalars.
-PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, const char file[])
+PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, Vec xp, const char file[])
 {
   JointSet          &js = a->joints;
   VecScatter         sc;
@@ -98,6 +99,9 @@ PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, co
   PetscCall(NaturalScatter(a, x, &sc));
   PetscCall(VecScatterBegin(sc, x, a->X, INSERT_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterEnd(sc, x, a->X, INSERT_VALUES, SCATTER_REVERSE));
+  if (!a->Xprev) PetscCall(VecDuplicate(a->X, &a->Xprev));
+  PetscCall(VecScatterBegin(sc, xp, a->Xprev, INSERT_VALUES, SCATTER_REVERSE));
+  PetscCall(VecScatterEnd(sc, xp, a->Xprev, INSERT_VALUES, SCATTER_REVERSE));
   PetscCall(VecScatterDestroy(&sc));
 
   const std::vector<PetscInt> rows = JointRows(a);
@@ -162,6 +166,8 @@ PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, co
   a->force_scale_seen          = s.force_scale_seen;
   a->total_cutbacks            = s.cutbacks;
   js.last_increment            = s.last_increment;
+  a->has_prev                  = s.has_prev ? PETSC_TRUE : PETSC_FALSE;
+  a->lambda_prev               = s.prev_load;
   js.util_ready                = PETSC_TRUE;
   js.frozen.clear();
   js.jac_assembled = s.jac_assembled, js.jac_reused = s.jac_reused;
@@ -179,7 +185,7 @@ PetscErrorCode CheckpointLoad(BoltnetAssembly a, const CheckpointIdentity &id, c
   Saved       s;
   ErrorLog    log;
   bool        is_checkpoint = false;
-  Vec         x, j, st;
+  Vec         x, j, st, xp;
   const char *f = file.c_str();
   PetscFunctionBeginUser;
   PetscCheck(a->net.dm && a->steps.empty(), a->comm, PETSC_ERR_ORDER, "CheckpointLoad() comes after BoltnetAssemblySetUp() and before any solve");
@@ -205,17 +211,19 @@ PetscErrorCode CheckpointLoad(BoltnetAssembly a, const CheckpointIdentity &id, c
   // What it belongs to, then its arrays, whole.
   PetscCall(CheckIdentity(a, id, s, f));
   PetscCall(CreateNatural(a, &x));
+  PetscCall(CreateNatural(a, &xp));
   PetscCall(CreateArray(a->comm, kRow, kRow * s.njoints, &j));
   PetscCall(CreateArray(a->comm, kStepRow, kStepRow * s.nsteps, &st));
   log.messages.clear();
   PetscCall(PetscPushErrorHandler(CaptureErrorHandler, &log));
-  ierr = ReadArrays(h.v, s, x, j, st);
+  ierr = ReadArrays(h.v, s, x, j, st, xp);
   PetscCall(PetscPopErrorHandler());
   std::string    sum;
   PetscErrorCode aerr = 0;
-  if (!ierr) aerr = DataChecksum(x, j, st, &sum);
-  if (!ierr && !aerr && sum == s.data_checksum) aerr = Apply(a, s, x, j, st, f);
+  if (!ierr) aerr = DataChecksum(x, j, st, xp, &sum);
+  if (!ierr && !aerr && sum == s.data_checksum) aerr = Apply(a, s, x, j, st, xp, f);
   PetscCall(VecDestroy(&x));
+  PetscCall(VecDestroy(&xp));
   PetscCall(VecDestroy(&j));
   PetscCall(VecDestroy(&st));
   PetscCall(aerr);

@@ -44,6 +44,7 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   PetscCall(MatDestroy(&(*a)->Jbase));
   PetscCall(MatDestroy(&(*a)->Pfac));
   PetscCall(VecDestroy(&(*a)->X));
+  PetscCall(VecDestroy(&(*a)->Xprev));
   PetscCall(DMDestroy(&(*a)->net.dm));
   PetscCallMPI(MPI_Comm_free(&(*a)->comm));
   delete *a; // the condensed patches' PETSc objects go with it (core/handle.hpp)
@@ -98,6 +99,7 @@ PetscErrorCode SetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsReal("-coupling_penalty", "Penalty of the rigid footprint links, as a multiple of the shell's membrane stiffness A11 (N/mm)", "BoltnetAssemblySetFromOptions", o.coupling_penalty, &o.coupling_penalty, nullptr));
   PetscCall(PetscOptionsBool("-shell_directors", "On curved shell parts, give the elements around each node the mean of their normals there as the common director (folds keep each element's own normal); false: every element its own normals (docs/shell.md)", "BoltnetAssemblySetFromOptions", o.shell_directors, &o.shell_directors, nullptr));
   PetscCall(PetscOptionsBool("-joint_stuck_linear", "Solve joints that stay stuck as linear springs (no state logic) and keep the Jacobian and its factorisation while no joint's tangent changes; every such joint is checked with the full law before a step is accepted", "BoltnetAssemblySetFromOptions", o.stuck_linear, &o.stuck_linear, nullptr));
+  PetscCall(PetscOptionsBool("-load_predictor", "Start each load step from the last converged solution moved on by the last converged step's increment, scaled to this step's (a secant predictor), where the load goes on the same way and the step was not cut back; false: from the last converged solution (docs/solver.md)", "BoltnetAssemblySolveLoadPath", o.predictor, &o.predictor, nullptr));
   PetscCall(PetscOptionsReal("-joint_stuck_margin", "Solve a joint as a linear spring in a step when its predicted utilization (trial force / friction threshold, or jump / clearance) stays below this", "BoltnetAssemblySetFromOptions", o.stuck_margin, &o.stuck_margin, nullptr));
   PetscCall(PetscOptionsBool("-load_progress", "Print one line per converged load step: the nominal step of the path reached (and the part of it, after cut-backs), load factor, Newton iterations, joints sticking, sliding and bearing (summed over ranks), elapsed time and an estimate of the time left (docs/scenes.md)", "BoltnetAssemblySolveLoadPath", o.progress, &o.progress, nullptr));
   PetscCall(PetscOptionsBool("-joint_monitor", "Print, per Newton iteration, the joints in each state and how many changed (summed over ranks)", "BoltnetAssemblySetFromOptions", o.monitor_states, &o.monitor_states, nullptr));

@@ -38,6 +38,9 @@ struct AssemblyOptions {
   // and the Jacobian (and its factorisation) is kept while no joint's tangent changes.
   PetscBool    stuck_linear = PETSC_TRUE;
   PetscReal    stuck_margin = 0.3; // freeze a joint whose predicted utilization stays below this
+  // The first iterate of a load step: the last converged solution moved on by the last converged
+  // step's increment, scaled to this one (docs/solver.md, "The first iterate of a step").
+  PetscBool    predictor = PETSC_TRUE;
   // Patches: condensed onto their ports, or kept whole (docs/solver.md, "Condensed patches"):
   // every one, none, or each where its dense port block is cheaper (patch/layout.hpp).
   Condense     condense       = Condense::Auto;
@@ -151,7 +154,13 @@ struct _p_BoltnetAssembly {
   SNES      snes      = nullptr;
   Mat       J         = nullptr;
   Vec       X         = nullptr; // converged solution
+  // The converged solution before X, at load factor lambda_prev (has_prev: there is one): the
+  // secant predictor's other point (solver/stepper.cpp), kept in checkpoints.
+  Vec       Xprev       = nullptr;
+  PetscReal lambda_prev = 0;
+  PetscBool has_prev    = PETSC_FALSE;
   PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
+  PetscBool user_force = PETSC_FALSE; // -snes_force_iteration given
   Mat       Jbase     = nullptr;     // the linear part of J (patches, seams), copied in before the joints
   // The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
   // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian,

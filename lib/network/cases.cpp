@@ -20,6 +20,7 @@ PetscErrorCode AssemblyReset(BoltnetAssembly a)
   a->failure.clear();
   a->singular.clear();
   a->force_scale_seen = 0;
+  a->has_prev         = PETSC_FALSE; // no secant predictor from the last case's path
   a->factorisations = a->krylov_its = a->linear_solves = 0;
   a->pfac_valid = PETSC_FALSE;
   JointSet &js  = a->joints;
