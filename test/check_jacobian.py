@@ -3,9 +3,9 @@
 
 Requirement: the joint tangents agree with finite differences of the forces,
 through PETSc's -snes_test_jacobian. The joint laws are piecewise smooth and the first iterate of a
-load step is the previous converged point, where a sliding joint sits exactly on its friction
-threshold: there PETSc's differencing step crosses the kink and measures it, not the tangent. Those
-iteration-0 comparisons are reported but not judged; every other one must agree to 1e-8 (they agree
+load step is the previous converged point (the test runs with -load_predictor false), where a
+sliding joint sits exactly on its friction threshold: there PETSc's differencing step crosses the
+kink and measures it, not the tangent. Those iteration-0 comparisons are reported but not judged; every other one must agree to 1e-8 (they agree
 to about 1e-11). The paper's state-switched tangent fails this on 2D paths, as it should.
 Usage: check_jacobian.py output.txt
 """
