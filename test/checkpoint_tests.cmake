@@ -17,13 +17,18 @@ set_tests_properties(restart_killed_fig3a_np1 PROPERTIES PROCESSORS 1 ENVIRONMEN
 set_tests_properties(restart_killed_fig3a_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np2)
 
 # The secant predictor's other point survives a restart (docs/solver.md, "The first iterate of a
-# step"): fig3c, whose steps 91 to 120 take one Newton iteration from the prediction and two or
-# three without, killed after step 100 (its only checkpoint) and restarted, repeats the uninterrupted
-# run's Newton iterations step by step. A restart that lost the point starts step 101 from the
-# converged solution alone and records 2 (measured: the test then fails).
+# step"): fig3c in 2,000 steps per segment, whose steps 3,001 to 4,000 take one Newton iteration from
+# the prediction and two without, killed after step 3,100 (its only checkpoint; 2,900 steps, over a
+# second, are left for the kill to land) and restarted, repeats the uninterrupted run's Newton
+# iterations step by step. A restart that lost the point starts step 3,101 from the converged
+# solution alone and records 2 (measured: the test then fails).
+boltnet_expect(run_fig3c_long 1 --match "6000 steps converged"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -load_steps 2000 -output_dir ${BOLTNET_OUT}/fig3c_long_np1)
+set_tests_properties(run_fig3c_long_np1 PROPERTIES FIXTURES_SETUP fig3c_long_np1)
 add_test(NAME restart_killed_fig3c_np1
-  COMMAND ${_restart} 1 1 100 ${BOLTNET_OUT}/fig3c_np1 ${BOLTNET_OUT}/restart_fig3c_np1 1e-12 -- -scene ${BOLTNET_SCENES}/fig3c.yaml)
-set_tests_properties(restart_killed_fig3c_np1 PROPERTIES PROCESSORS 1 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3c_np1)
+  COMMAND ${_restart} 1 1 3100 ${BOLTNET_OUT}/fig3c_long_np1 ${BOLTNET_OUT}/restart_fig3c_np1 1e-12
+          -- -scene ${BOLTNET_SCENES}/fig3c.yaml -load_steps 2000)
+set_tests_properties(restart_killed_fig3c_np1 PROPERTIES PROCESSORS 1 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3c_long_np1)
 # Another number of ranks: the checkpoint's arrays do not depend on the ranks, so a run of the chain
 # killed on 2 ranks goes on on 3 and ends with the uninterrupted 2-rank run's results to the rank
 # tolerance of the chain (1e-10, as chain_ranks_1_vs_*). 150 steps: the kill comes long before the end.
