@@ -27,3 +27,19 @@ foreach(ranks 1 2 3)
   set_tests_properties(predictor_fig3c_same_joints_np${ranks} predictor_fig3c_fewer_iterations_np${ranks}
     PROPERTIES FIXTURES_REQUIRED "predictor_fig3c_true_np${ranks};predictor_fig3c_false_np${ranks}")
 endforeach()
+# From a prediction that is already the solution to round-off, PETSc's bt line search finds no
+# decrease; the predicted step may fail that line search once more than -snes_max_fail allows, and
+# the point is then judged by the convergence test. fig3c in 12 fixed steps per segment with bt
+# converges to its closed form. Without that allowance (-snes_max_fail 0 gives a predicted step what
+# the default 1 gave it before) it fails at step 2, on the forced first iteration.
+set(out ${BOLTNET_OUT}/predictor_fig3c_bt_np1)
+boltnet_expect(predictor_fig3c_bt 1 --match "36 steps converged \\(0 cut-backs\\)" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${out}
+  -load_steps 12 -load_max_cuts 0 -snes_linesearch_type bt)
+add_test(NAME predictor_fig3c_bt_closed_form_np1
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${out}/joints.csv 1.5e5 5000 4e4 0.05 3000)
+set_tests_properties(predictor_fig3c_bt_closed_form_np1 PROPERTIES DEPENDS predictor_fig3c_bt_np1)
+boltnet_expect(predictor_fig3c_bt_no_allowance 1 --status 3
+  --match "Load step 2 from load factor 500 to 1000 did not converge \\(DIVERGED_LINE_SEARCH after 0 Newton iterations\\)" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance
+  -load_steps 12 -load_max_cuts 0 -snes_linesearch_type bt -snes_max_fail 0)

@@ -161,6 +161,7 @@ struct _p_BoltnetAssembly {
   PetscBool has_prev    = PETSC_FALSE;
   PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
   PetscBool user_force = PETSC_FALSE; // -snes_force_iteration given
+  PetscInt  user_max_fail = 1;        // -snes_max_fail
   Mat       Jbase     = nullptr;     // the linear part of J (patches, seams), copied in before the joints
   // The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
   // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian,

@@ -75,6 +75,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESLineSearchBoltnetSetStateChangeFunction(ls, AssemblyCountStateChanges, a));
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-snes_atol", &a->user_atol));
   PetscCall(SNESGetForceIteration(a->snes, &a->user_force)); // -snes_force_iteration; a predicted step forces its own
+  PetscCall(SNESGetMaxNonlinearStepFailures(a->snes, &a->user_max_fail)); // -snes_max_fail; a predicted step may fail once more
   PetscFunctionReturn(0);
 }
 
@@ -243,7 +244,9 @@ PetscErrorCode PrintProgress(BoltnetAssembly a, const StepInfo &info, const std:
 // iterates), only the Newton iterations do: on plate-grid 40 instead of 49 (docs/performance.md).
 // A predicted step takes at least one Newton iteration (SNESSetForceIteration): where the response
 // is linear the prediction is the solution to round-off, and whether its residual passes the
-// round-off test before any iteration would then depend on the rank count.
+// round-off test before any iteration would then depend on the rank count. From such a point a line
+// search that asks for a decrease (PETSc's bt) cannot find one, so a predicted step may fail one
+// line search more (SNESSetMaxNonlinearStepFailures) and the convergence test then judges the point.
 PetscErrorCode PredictStep(BoltnetAssembly a, Vec Xtry, PetscBool *moved)
 {
   PetscFunctionBeginUser;
@@ -297,6 +300,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
       PetscBool predicted = PETSC_FALSE;
       if (a->opt.predictor && cuts == 0) PetscCall(PredictStep(a, Xtry, &predicted));
       PetscCall(SNESSetForceIteration(a->snes, predicted || a->user_force ? PETSC_TRUE : PETSC_FALSE));
+      PetscCall(SNESSetMaxNonlinearStepFailures(a->snes, a->user_max_fail + (predicted ? 1 : 0)));
       PetscCall(AssemblyApplyDirichlet(a, Xtry, a->lambda_target));
       PetscCall(AssemblyFreezeStuck(a, a->lambda_target - a->lambda));
       PetscCall(SetStepTolerance(a, Xtry));
