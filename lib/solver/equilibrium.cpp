@@ -246,8 +246,8 @@ static PetscErrorCode MumpsLU(BoltnetAssembly a, KSP *ksp, PC *pc, PetscBool *mu
   PetscFunctionReturn(0);
 }
 
-// Factors on disk from the start when they will not fit in memory (docs/solver.md, "No null
-// pivot"). MUMPS's analysis knows what its in-core factorisation will take on each rank (INFO(15),
+// Factors on disk from the start when they will not fit in memory (docs/solver.md, "Factors on
+// disk"). MUMPS's analysis knows what its in-core factorisation will take on each rank (INFO(15),
 // in MB, the workspace relaxation ICNTL(14) included), and ICNTL(22) is read only by the
 // factorisation that follows (MUMPS users' guide, ICNTL(22)); so between the two, the ranks that
 // share a node add up their estimates and compare them with what the node has. A factorisation in
@@ -256,13 +256,12 @@ static PetscErrorCode MumpsLU(BoltnetAssembly a, KSP *ksp, PC *pc, PetscBool *mu
 // was killed (docs/performance.md). Not called where the user's own -mat_mumps_icntl_22 decides.
 static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
 {
-  PetscInt    info1, icntl22, incore, ooc;
+  PetscInt    info1, incore, ooc;
   MPI_Comm    node;
   PetscMPIInt rank;
   PetscFunctionBeginUser;
   PetscCall(MatMumpsGetInfog(F, 1, &info1));
   if (info1 < 0) PetscFunctionReturn(0); // the analysis failed: the factorisation reports it
-  PetscCall(MatMumpsGetIcntl(F, 22, &icntl22));
   PetscCall(MatMumpsGetInfo(F, 15, &incore)); // this rank's estimate in core, MB
   PetscCall(MatMumpsGetInfo(F, 17, &ooc));    // and out of core
   double mine[2] = {(double)incore, (double)ooc}, need[2];
@@ -281,7 +280,7 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
   double report[3] = {need[0], need[1], have};
   PetscCallMPI(MPI_Bcast(report, 3, MPI_DOUBLE, worst.rank, a->comm));
   PetscCall(PetscInfo(F, "MUMPS's analysis: %.0f MB in core, %.0f MB out of core, on the node that needs most against the %.0f MB it has%s\n", report[0], report[1], report[2], a->memory_mb > 0 ? " (-interface_memory_mb)" : " available"));
-  if (icntl22 == 1 || report[2] <= 0 || worst.ratio <= 1) PetscFunctionReturn(0);
+  if (report[2] <= 0 || worst.ratio <= 1) PetscFunctionReturn(0); // fits, or what the node has is unknown
   PetscCall(MatMumpsSetIcntl(F, 22, 1));
   a->factors_on_disk = PETSC_TRUE;
   PetscInt N;
@@ -315,13 +314,15 @@ static PetscErrorCode WrapSymbolic(BoltnetAssembly a, Mat F)
 {
   PetscContainer container;
   StorageChoice *choice;
+  void (*symbolic)(void);
   PetscFunctionBeginUser;
   PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_storage_choice", (PetscObject *)&container));
   if (container) PetscFunctionReturn(0); // this factor's analysis is wrapped already
+  PetscCall(MatGetOperation(F, MATOP_LUFACTOR_SYMBOLIC, &symbolic));
+  PetscCheck(symbolic, a->comm, PETSC_ERR_PLIB, "MUMPS's factor has no symbolic LU factorisation");
   PetscCall(PetscNew(&choice));
-  choice->a = a;
-  PetscCall(MatGetOperation(F, MATOP_LUFACTOR_SYMBOLIC, (void (**)(void)) & choice->symbolic));
-  PetscCheck(choice->symbolic, a->comm, PETSC_ERR_PLIB, "MUMPS's factor has no symbolic LU factorisation");
+  choice->a        = a;
+  choice->symbolic = (PetscErrorCode(*)(Mat, Mat, IS, IS, const MatFactorInfo *))symbolic;
   PetscCall(PetscContainerCreate(a->comm, &container));
   PetscCall(PetscContainerSetPointer(container, choice));
   PetscCall(PetscContainerSetUserDestroy(container, PetscContainerUserDestroyDefault));
