@@ -101,7 +101,9 @@ struct Rows {
   SurfacePoint p;
 };
 
-Rows RowsAt(const Quad &q, double xi, double eta)
+// Without `shear` the transverse shear rows B.s stay zero: the incompatible blocks need only the
+// membrane and bending rows, and the four tying points are half the cost of a point.
+Rows RowsAt(const Quad &q, double xi, double eta, bool shear = true)
 {
   Rows        B;
   const Shape s = ShapeAt(xi, eta);
@@ -118,6 +120,7 @@ Rows RowsAt(const Quad &q, double xi, double eta)
     AddDirectorCurvature(dN[i], dV, &B.b[0][0], 24, 6 * i);
     AddDrill(B.p, s.N[i], dN[i], B.d, 6 * i, 6 * i + 3);
   }
+  if (!shear) return B;
   // MITC4: gamma_xi tied at (0, +-1), gamma_eta at (+-1, 0), interpolated linearly across.
   double A[24] = {}, Bt[24] = {}, C[24] = {}, Dt[24] = {};
   CovariantShear(q, 0, 1, A, nullptr);
@@ -194,14 +197,17 @@ struct Stiffness {
   double K[24][24] = {}, Kau[4][24] = {}, Kaa[4][4] = {};
 };
 
-void Integrate(const Quad &q, const ShellMaterial &mat, const ElementOptions &o, Stiffness &S)
+// With `stiffness` false only the incompatible blocks Kau and Kaa are integrated: ElementStrains
+// needs nothing else, and the 24 x 24 products and the condensation are most of the work (the
+// stresses of every element at every step written: docs/output.md).
+void Integrate(const Quad &q, const ShellMaterial &mat, const ElementOptions &o, Stiffness &S, bool stiffness = true)
 {
   if (!(o.drill >= 0) || !std::isfinite(o.drill))
     throw std::invalid_argument("Shell element: drilling factor = " + std::to_string(o.drill) + " must be >= 0");
   const bool qm6 = o.membrane == Membrane::Incompatible;
   for (int g = 0; g < 4; ++g) {
     const double xi = kXi[g] * kGauss, eta = kEta[g] * kGauss;
-    const Rows   B  = RowsAt(q, xi, eta);
+    const Rows   B  = RowsAt(q, xi, eta, stiffness);
     const double w  = B.p.detJ; // Gauss weights are 1
     // The section in the point's frame (the material direction projected on its tangent plane).
     const ShellMaterial m     = SectionInFrame(mat, B.p.e[0], B.p.e[1]);
@@ -210,14 +216,14 @@ void Integrate(const Quad &q, const ShellMaterial &mat, const ElementOptions &o,
     double NM[6][24] = {}, Q[2][24] = {};
     for (int k = 0; k < 24; ++k) {
       for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          NM[i][k] += m.A[3 * i + j] * B.m[j][k] + m.B[3 * i + j] * B.b[j][k];
-          NM[i + 3][k] += m.B[3 * i + j] * B.m[j][k] + m.D[3 * i + j] * B.b[j][k];
-        }
+        for (int j = 0; j < 3; ++j) NM[i][k] += m.A[3 * i + j] * B.m[j][k] + m.B[3 * i + j] * B.b[j][k];
+      if (!stiffness) continue; // Kau needs the membrane forces N only
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) NM[i + 3][k] += m.B[3 * i + j] * B.m[j][k] + m.D[3 * i + j] * B.b[j][k];
       for (int i = 0; i < 2; ++i)
         for (int j = 0; j < 2; ++j) Q[i][k] += m.H[2 * i + j] * B.s[j][k];
     }
-    for (int a = 0; a < 24; ++a)
+    for (int a = 0; a < 24 && stiffness; ++a)
       for (int b = 0; b < 24; ++b) {
         double v = gamma * B.d[a] * B.d[b];
         for (int i = 0; i < 3; ++i) v += B.m[i][a] * NM[i][b] + B.b[i][a] * NM[i + 3][b];
@@ -236,6 +242,7 @@ void Integrate(const Quad &q, const ShellMaterial &mat, const ElementOptions &o,
       }
     }
   }
+  if (!stiffness) return;
   if (qm6) { // static condensation: K -= Kau^T Kaa^-1 Kau
     double X[24 * 4], A[4][4];
     for (int b = 0; b < 24; ++b)
@@ -408,7 +415,7 @@ GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const Shel
   }
   if (options.membrane == Membrane::Incompatible) { // recover the condensed amplitudes
     Stiffness S;
-    Integrate(q, mat, options, S);
+    Integrate(q, mat, options, S, false);
     double alpha[4] = {}, A[4][4];
     for (int a = 0; a < 4; ++a) {
       for (int k = 0; k < 24; ++k) alpha[a] -= S.Kau[a][k] * ul[k];
