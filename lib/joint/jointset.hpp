@@ -37,6 +37,7 @@ struct JointSet {
   PetscBool              util_ready     = PETSC_FALSE; // util_now holds the last converged step's
   // The joint tangents assembled into J (valid only while jac_valid) and the bookkeeping.
   std::vector<Mat6> jac_tangent;
+  std::vector<char> jac_state; // their states (State, plus 8 when bearing)
   PetscBool         jac_valid = PETSC_FALSE;
   PetscInt          jac_assembled = 0, jac_reused = 0;         // Jacobian evaluations assembled / kept
   PetscInt          frozen_joint_steps = 0, joint_steps = 0;   // summed over attempts: joints frozen / all

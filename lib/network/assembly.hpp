@@ -170,6 +170,13 @@ struct _p_BoltnetAssembly {
   PetscInt  refactor_its = 25;
   Mat       Pfac         = nullptr; // created by AssemblySetUpSolver for the lagged solve only
   PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
+  // The direct solve's modified Newton (docs/solver.md, "Keeping the factorisation"): the Jacobian
+  // of an earlier iterate of the same solve, and its factors, are kept while the residual falls by
+  // at least this factor per iteration and no joint changes state (0: refactor at every iteration).
+  PetscReal keep_ratio   = 0.1;
+  PetscInt  keep_it      = -1;   // iteration of the last Jacobian call in this solve
+  PetscReal keep_fnorm   = 0;    // the residual norm there
+  PetscInt  kept         = 0;    // Jacobians kept by this rule, for summary.json
   // Factors on disk (MUMPS ICNTL(22) = 1) when MUMPS's analysis estimates more memory than a node
   // has (memory_mb, 0: what the operating system says is available), or when a factorisation runs
   // out of memory: -interface_out_of_core; factors_on_disk once that happened, or once a

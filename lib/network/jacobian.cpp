@@ -239,6 +239,13 @@ PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P)
   PetscFunctionReturn(0);
 }
 
+// A joint's state as the Jacobian sees it: stick, slide, contact, and whether it bears in its
+// clearance (jointset.hpp's jac_state).
+static char StateCode(const Response &r)
+{
+  return (char)((int)r.state + (r.bearing ? 8 : 0));
+}
+
 static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 {
   BoltnetAssembly       a = static_cast<BoltnetAssembly>(ctx);
@@ -247,6 +254,14 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscFunctionBeginUser;
   PetscCall(AssemblyEvaluateJoints(a, X, resp));
   PetscCall(PetscLogEventBegin(Events().jacobian, 0, 0, 0, 0));
+  // How fast the solve converges: the residual against the last iteration's (modified Newton, below).
+  PetscInt  it;
+  PetscReal fnorm;
+  PetscCall(SNESGetIterationNumber(snes, &it));
+  PetscCall(SNESGetFunctionNorm(snes, &fnorm));
+  const PetscReal ratio = it > 0 && it == a->keep_it + 1 && a->keep_fnorm > 0 ? fnorm / a->keep_fnorm : PETSC_MAX_REAL;
+  const bool      fast  = a->keep_ratio > 0 && ratio <= a->keep_ratio;
+  a->keep_it = it, a->keep_fnorm = fnorm;
   // Linear where it can be: the patches and seams are linear, so when no joint's tangent differs
   // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
   // object state, and PCSetUp then keeps the factorisation too.
@@ -260,6 +275,21 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
     if (!total[0]) {
       ++js.jac_reused;
       if (P == a->Pfac) PetscCall(AssemblyLaggedFactorisation(a, J, P));
+      PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
+      PetscFunctionReturn(0);
+    }
+  }
+  // Modified Newton: keep J and its factorisation from an earlier iterate of this solve while the
+  // last iteration reduced the residual by keep_ratio and no joint changed state since J was
+  // assembled. Only the bearing joints' contact directions (and sliding joints' tangents) have moved:
+  // the step with the old factors then contracts about as fast as the factorisation saved is dear.
+  if (fast && J == a->J && P == J && js.jac_valid && js.jac_state.size() == resp.size()) {
+    PetscInt changed = 0, total;
+    for (size_t k = 0; k < resp.size(); ++k) changed += js.jac_state[k] != StateCode(resp[k]);
+    PetscCallMPI(MPIU_Allreduce(&changed, &total, 1, MPIU_INT, MPI_SUM, a->comm));
+    if (!total) {
+      ++a->kept;
+      PetscCall(PetscInfo(snes, "Jacobian and factorisation kept at iteration %" PetscInt_FMT " (residual %g of the last)\n", it, (double)ratio));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
       PetscFunctionReturn(0);
     }
@@ -307,7 +337,11 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   ++js.jac_assembled;
   js.jac_valid = (M == a->J) ? PETSC_TRUE : PETSC_FALSE;
   js.jac_tangent.resize(resp.size());
-  for (size_t k = 0; k < resp.size(); ++k) js.jac_tangent[k] = resp[k].tangent;
+  js.jac_state.resize(resp.size());
+  for (size_t k = 0; k < resp.size(); ++k) {
+    js.jac_tangent[k] = resp[k].tangent;
+    js.jac_state[k]   = StateCode(resp[k]);
+  }
   if (M != P) PetscCall(AssemblyLaggedFactorisation(a, J, P));
   else if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
