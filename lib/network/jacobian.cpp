@@ -274,6 +274,11 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
     PetscCall(PetscInfo(snes, "%" PetscInt_FMT " of the %" PetscInt_FMT " joints' tangents differ from the last Jacobian's\n", total[0], total[1]));
     if (!total[0]) {
       ++js.jac_reused;
+      // J is this iterate's Jacobian to the bit: it holds these states as much as the ones it was
+      // assembled at. Recorded, so that a run restarted here (which assembles J afresh) keeps the
+      // same factorisations below as the run that was not interrupted.
+      js.jac_state.resize(resp.size());
+      for (size_t k = 0; k < resp.size(); ++k) js.jac_state[k] = StateCode(resp[k]);
       if (P == a->Pfac) PetscCall(AssemblyLaggedFactorisation(a, J, P));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
       PetscFunctionReturn(0);
