@@ -70,6 +70,22 @@ PetscErrorCode FieldSpaceDestroy(FieldSpace &s)
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode FieldSpaceRelease(FieldSpace &s, PetscInt bs)
+{
+  PetscFunctionBeginUser;
+  auto sc = s.scatter.find(bs);
+  if (sc != s.scatter.end()) {
+    PetscCall(VecScatterDestroy(&sc->second));
+    s.scatter.erase(sc);
+  }
+  auto v = s.vecs.find(bs);
+  if (v != s.vecs.end()) {
+    for (Vec &x : v->second) PetscCall(VecDestroy(&x));
+    s.vecs.erase(v);
+  }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
 {
   MPI_Comm comm = a->comm;

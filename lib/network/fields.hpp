@@ -72,6 +72,9 @@ PetscErrorCode FieldMapDestroy(FieldMap *m);
 // time a block size is asked for: several datasets of one space travel in one scatter, side by side.
 PetscErrorCode FieldSpaceColumns(FieldSpace &s, Vec packed, PetscInt K, PetscInt first, PetscInt bs, Vec *out);
 
+// The Vecs and the scatter of block size bs destroyed (collective, as their creation): for packs
+// written once (the mesh), which would otherwise be kept for the whole run.
+PetscErrorCode FieldSpaceRelease(FieldSpace &s, PetscInt bs);
 // Collective: a natural-order Vec (block size bs, as many rows as the rank owns) holding `owned`
 // (bs values per owned item of s, in owned order). Borrowed: it belongs to s and is overwritten by
 // the next call with the same block size (kept, so that a step creates no Vec: every creation is
