@@ -192,6 +192,16 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
   }
   PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
+  {
+    // The preallocation counted every element's contribution, about twice K's distinct entries on
+    // a quadrilateral mesh, and assembly does not give the rest back; K is kept for the run (the
+    // interiors' recovery multiplies by it), so it is kept at its size (MatDuplicate allocates the
+    // assembled nonzeros only).
+    MatHandle exact;
+    PetscCall(MatDuplicate(K, MAT_COPY_VALUES, exact.out()));
+    cp->K = std::move(exact);
+    K     = cp->K.get();
+  }
   PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
   cp->S.assign((size_t)cp->nb * cp->nb, 0.0);
 
