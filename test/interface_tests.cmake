@@ -113,11 +113,12 @@ set_tests_properties(plate_grid_small_lagged_factors_less PROPERTIES FIXTURES_RE
 
 # -log_view says where the time goes: boltnet's stages (lib/core/log.hpp) are listed, and the
 # condensation, the interface solve and the output took time in theirs (a stage that no code pushes
-# shows 0.0000e+00), on 1, 2 and 3 ranks. Every patch condensed, so that the interior recovery runs
+# shows 0.0000e+00), with the condensation's own events called, on 1, 2 and 3 ranks. Every patch condensed, so that the interior recovery runs
 # on every rank count (the automatic choice keeps fig3b's cut pieces whole on 2 and 3 ranks).
 foreach(ranks 1 2 3)
   boltnet_expect(log_view_stages ${ranks} --match "Boltnet Set-up: " --match "Boltnet Condense: [1-9]" --match "Boltnet Solve: [1-9]"
                  --match "Boltnet Output: [1-9]" --match "BoltnetCondense" --match "BoltnetRecover"
+                 --match "BoltnetPatchMatrix +[1-9]" --match "BoltnetSchur +[1-9]"
                  -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3b.yaml
                  -output_dir ${BOLTNET_OUT}/log_view_stages_np${ranks} -log_view -patch_condense true)
 endforeach()

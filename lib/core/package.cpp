@@ -44,6 +44,8 @@ PetscErrorCode BoltnetInitializePackage(void)
   PetscCall(PetscLogEventRegister("BoltnetLayout", events.classid, &events.layout));
   PetscCall(PetscLogEventRegister("BoltnetNetwork", events.classid, &events.network));
   PetscCall(PetscLogEventRegister("BoltnetCondense", events.classid, &events.condense));
+  PetscCall(PetscLogEventRegister("BoltnetPatchMatrix", events.classid, &events.patch_matrix));
+  PetscCall(PetscLogEventRegister("BoltnetSchur", events.classid, &events.schur));
   PetscCall(PetscLogEventRegister("BoltnetResidual", events.classid, &events.residual));
   PetscCall(PetscLogEventRegister("BoltnetJacobian", events.classid, &events.jacobian));
   PetscCall(PetscLogEventRegister("BoltnetJoints", events.classid, &events.joints));

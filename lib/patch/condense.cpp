@@ -1,4 +1,5 @@
 #include "patch/condense.hpp"
+#include "core/log.hpp"
 #include "patch/operator.hpp"
 
 #include <petscmat.h>
@@ -140,6 +141,50 @@ void ProjectFreeRigidMotions(const ShellPatch &p, CondensedPatch *cp)
   cp->free_motions = (PetscInt)N.size();
 }
 
+namespace {
+// K's rows in compressed form (columns increasing) from the triplets that fall in it: row[] maps a
+// patch dof to its row of K (negative: not in K). Each entry is summed in the triplets' order, the
+// order MatSetValue(ADD_VALUES) would add them one by one, so K is the same to the bit; a dense
+// marker per column finds an entry already met in its row (linear in the triplets).
+struct RowsCsr {
+  std::vector<PetscInt>    rowptr, cols;
+  std::vector<PetscScalar> vals;
+};
+RowsCsr CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row)
+{
+  std::vector<PetscInt> start(n + 1, 0);
+  for (const auto &[r, c, v] : t)
+    if (row[r] >= 0 && row[c] >= 0) start[row[r] + 1]++;
+  for (PetscInt i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<std::pair<PetscInt, PetscScalar>> byrow(start[n]);
+  std::vector<PetscInt>                         next(start.begin(), start.end() - 1);
+  for (const auto &[r, c, v] : t)
+    if (row[r] >= 0 && row[c] >= 0) byrow[next[row[r]]++] = {row[c], v};
+  RowsCsr k;
+  k.rowptr.assign(n + 1, 0);
+  std::vector<PetscInt>                         pos(n, -1);
+  std::vector<std::pair<PetscInt, PetscScalar>> entries;
+  for (PetscInt i = 0; i < n; ++i) {
+    entries.clear();
+    for (PetscInt e = start[i]; e < start[i + 1]; ++e) {
+      const auto &[c, v] = byrow[e];
+      if (pos[c] < 0) {
+        pos[c] = (PetscInt)entries.size();
+        entries.emplace_back(c, v);
+      } else entries[pos[c]].second += v;
+    }
+    for (const auto &e : entries) pos[e.first] = -1;
+    std::sort(entries.begin(), entries.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
+    for (const auto &e : entries) {
+      k.cols.push_back(e.first);
+      k.vals.push_back(e.second);
+    }
+    k.rowptr[i + 1] = (PetscInt)k.cols.size();
+  }
+  return k;
+}
+} // namespace
+
 PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double penalty, double radius, const PatchLoads &loads, CondensedPatch *cp)
 {
   PetscFunctionBeginUser;
@@ -147,6 +192,7 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
   // Classes of the patch dof: row of K (>= 0: interior rows first, then the ports), or -1 for a
   // slave, -2 for a prescribed interior dof.
   std::vector<PetscInt> row(ndof, -1);
+  PetscCall(PetscLogEventBegin(Events().patch_matrix, 0, 0, 0, 0));
   if (type == CouplingType::Exact) cp->slaves = ExactSlaves(p);
   std::vector<char> port(p.nnodes(), 0);
   for (int n : p.carried) port[n] = 1;
@@ -174,35 +220,23 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
   // K over I and B; the entries of K in the columns of D are kept for the load terms
   // (CondensedPatchLoads), which change from one load case to the next.
   Triplets              t = PatchTriplets(p, type, penalty, radius, false);
-  std::vector<PetscInt> nnz(n, 0);
   cp->kd.clear();
-  for (const auto &[r, c, v] : t) {
-    const PetscInt R = row[r], C = row[c];
-    if (R >= 0 && C >= 0) nnz[R]++;
-    if (R >= 0 && C == -2) cp->kd.push_back({R, c, v});
+  for (const auto &[r, c, v] : t)
+    if (row[r] >= 0 && row[c] == -2) cp->kd.push_back({row[r], c, v});
+  {
+    // K is kept for the run (the interiors' recovery multiplies by it), so it is allocated at its
+    // size: the triplets repeat an entry once per element and per footprint node eliminated into
+    // it, and SeqAIJ assembly keeps the room a preallocation by triplets would have reserved.
+    const RowsCsr k = CompressRows(n, t, row);
+    PetscCall(MatCreate(PETSC_COMM_SELF, cp->K.out()));
+    PetscCall(MatSetSizes(cp->K.get(), n, n, n, n));
+    PetscCall(MatSetType(cp->K.get(), MATSEQAIJ));
+    PetscCall(MatSeqAIJSetPreallocationCSR(cp->K.get(), k.rowptr.data(), k.cols.data(), k.vals.data())); // assembles it
   }
   cp->row = std::move(row);
-  for (PetscInt r = 0; r < n; ++r) nnz[r] = std::min(nnz[r], n); // duplicates are summed
-  PetscCall(MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, nnz.data(), cp->K.out()));
-  Mat K = cp->K.get();
-  PetscCall(MatSetOption(K, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
-  for (const auto &[r, c, v] : t) {
-    const PetscInt R = cp->row[r], C = cp->row[c];
-    if (R >= 0 && C >= 0) PetscCall(MatSetValue(K, R, C, v, ADD_VALUES));
-  }
-  PetscCall(MatAssemblyBegin(K, MAT_FINAL_ASSEMBLY));
-  PetscCall(MatAssemblyEnd(K, MAT_FINAL_ASSEMBLY));
-  {
-    // The preallocation counted every element's contribution, about twice K's distinct entries on
-    // a quadrilateral mesh, and assembly does not give the rest back; K is kept for the run (the
-    // interiors' recovery multiplies by it), so it is kept at its size (MatDuplicate allocates the
-    // assembled nonzeros only).
-    MatHandle exact;
-    PetscCall(MatDuplicate(K, MAT_COPY_VALUES, exact.out()));
-    cp->K = std::move(exact);
-    K     = cp->K.get();
-  }
+  Mat K   = cp->K.get();
   PetscCall(MatSetOption(K, MAT_SYMMETRIC, PETSC_TRUE));
+  PetscCall(PetscLogEventEnd(Events().patch_matrix, 0, 0, 0, 0));
   cp->S.assign((size_t)cp->nb * cp->nb, 0.0);
 
   if (cp->ni == 0) { // every dof is a port: S is K itself
@@ -243,6 +277,7 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
   PetscCheck(infog1 >= 0 || infog1 == -10, PETSC_COMM_SELF, PETSC_ERR_LIB, "Patch of part %" PetscInt_FMT " (%" PetscInt_FMT " nodes): MUMPS failed to factor its interior (INFOG(1) = %" PetscInt_FMT ")", p.id, p.nnodes(), infog1);
   PetscCheck(ferr == MAT_FACTOR_NOERROR && nullpivots == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
              "Patch of part %" PetscInt_FMT " (%" PetscInt_FMT " nodes): its interior is singular (%" PetscInt_FMT " null pivots): some of it is held by no joint, seam or support (a mechanism, or a mesh island)", p.id, p.nnodes(), nullpivots);
+  PetscCall(PetscLogEventBegin(Events().schur, 0, 0, 0, 0));
   {
     Mat                S;
     const PetscScalar *s;
@@ -254,6 +289,7 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
     PetscCall(MatDestroy(&S));
   }
   ProjectFreeRigidMotions(p, cp);
+  PetscCall(PetscLogEventEnd(Events().schur, 0, 0, 0, 0));
   PetscCall(PetscInfo(nullptr, "patch of part %" PetscInt_FMT ": %" PetscInt_FMT " interior and %" PetscInt_FMT " port dof, %" PetscInt_FMT " free rigid-body motions\n", p.id, cp->ni, cp->nb, cp->free_motions));
   PetscCall(MatMumpsSetIcntl(F, 26, 0)); // from now on MatSolve solves with K_II alone
   PetscCall(CondensedPatchLoads(p.id, loads, cp));
