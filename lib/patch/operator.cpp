@@ -158,6 +158,40 @@ PatchOperator Compress(PetscInt n, Triplets &t)
   return op;
 }
 
+RowsCsr CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row)
+{
+  std::vector<PetscInt> start(n + 1, 0);
+  for (const auto &[r, c, v] : t)
+    if (row[r] >= 0 && row[c] >= 0) start[row[r] + 1]++;
+  for (PetscInt i = 0; i < n; ++i) start[i + 1] += start[i];
+  std::vector<std::pair<PetscInt, PetscScalar>> byrow(start[n]);
+  std::vector<PetscInt>                         next(start.begin(), start.end() - 1);
+  for (const auto &[r, c, v] : t)
+    if (row[r] >= 0 && row[c] >= 0) byrow[next[row[r]]++] = {row[c], v};
+  RowsCsr k;
+  k.rowptr.assign(n + 1, 0);
+  std::vector<PetscInt>                         pos(n, -1);
+  std::vector<std::pair<PetscInt, PetscScalar>> entries;
+  for (PetscInt i = 0; i < n; ++i) {
+    entries.clear();
+    for (PetscInt e = start[i]; e < start[i + 1]; ++e) {
+      const auto &[c, v] = byrow[e];
+      if (pos[c] < 0) {
+        pos[c] = (PetscInt)entries.size();
+        entries.emplace_back(c, v);
+      } else entries[pos[c]].second += v;
+    }
+    for (const auto &e : entries) pos[e.first] = -1;
+    std::sort(entries.begin(), entries.end(), [](const auto &x, const auto &y) { return x.first < y.first; });
+    for (const auto &e : entries) {
+      k.cols.push_back(e.first);
+      k.vals.push_back(e.second);
+    }
+    k.rowptr[i + 1] = (PetscInt)k.cols.size();
+  }
+  return k;
+}
+
 PatchOperator BuildShellOperator(const ShellPatch &p, CouplingType type, double penalty, double radius)
 {
   Triplets t = PatchTriplets(p, type, penalty, radius, true);

@@ -23,5 +23,15 @@ void AddPenaltyLinks(const ShellPatch &p, double penalty, double radius, Triplet
 Triplets PatchTriplets(const ShellPatch &p, CouplingType type, double penalty, double radius, bool constraint_rows);
 // Compressed rows of n x n from triplets (summing duplicates; t is sorted in place).
 PatchOperator Compress(PetscInt n, Triplets &t);
+// Compressed rows (columns increasing) of the n x n matrix that the triplets falling in it make:
+// row[] maps a patch dof to its row and column (negative: not in the matrix). Each entry is summed
+// in the triplets' order, the order in which MatSetValue(ADD_VALUES) would add them one by one, so
+// the values are the same to the bit; a dense marker per column finds an entry already met in its
+// row, so the cost is linear in the triplets.
+struct RowsCsr {
+  std::vector<PetscInt>    rowptr, cols;
+  std::vector<PetscScalar> vals;
+};
+RowsCsr CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row);
 
 } // namespace boltnet
