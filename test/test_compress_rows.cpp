@@ -59,7 +59,7 @@ PetscErrorCode Check(unsigned seed, PetscInt ndof, size_t ntriplets, PetscInt *b
 {
   PetscFunctionBeginUser;
   const Case              c = Draw(seed, ndof, ntriplets);
-  const boltnet::RowsCsr  k = boltnet::CompressRows(c.n, c.t, c.row);
+  const boltnet::PatchOperator k = boltnet::CompressRows(c.n, c.t, c.row);
   Mat                     A, B;
   PetscCall(AssembleOneByOne(c, &A));
   PetscCall(MatCreate(PETSC_COMM_SELF, &B));

@@ -183,7 +183,7 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
     // K is kept for the run (the interiors' recovery multiplies by it), so it is allocated at its
     // size: the triplets repeat an entry once per element and per footprint node eliminated into
     // it, and SeqAIJ assembly keeps the room a preallocation by triplets would have reserved.
-    const RowsCsr k = CompressRows(n, t, row);
+    const PatchOperator k = CompressRows(n, t, row);
     PetscCall(MatCreate(PETSC_COMM_SELF, cp->K.out()));
     PetscCall(MatSetSizes(cp->K.get(), n, n, n, n));
     PetscCall(MatSetType(cp->K.get(), MATSEQAIJ));

@@ -158,7 +158,7 @@ PatchOperator Compress(PetscInt n, Triplets &t)
   return op;
 }
 
-RowsCsr CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row)
+PatchOperator CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row)
 {
   std::vector<PetscInt> start(n + 1, 0);
   for (const auto &[r, c, v] : t)
@@ -168,7 +168,8 @@ RowsCsr CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> 
   std::vector<PetscInt>                         next(start.begin(), start.end() - 1);
   for (const auto &[r, c, v] : t)
     if (row[r] >= 0 && row[c] >= 0) byrow[next[row[r]]++] = {row[c], v};
-  RowsCsr k;
+  PatchOperator k;
+  k.n = n;
   k.rowptr.assign(n + 1, 0);
   std::vector<PetscInt>                         pos(n, -1);
   std::vector<std::pair<PetscInt, PetscScalar>> entries;

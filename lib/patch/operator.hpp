@@ -28,10 +28,6 @@ PatchOperator Compress(PetscInt n, Triplets &t);
 // in the triplets' order, the order in which MatSetValue(ADD_VALUES) would add them one by one, so
 // the values are the same to the bit; a dense marker per column finds an entry already met in its
 // row, so the cost is linear in the triplets.
-struct RowsCsr {
-  std::vector<PetscInt>    rowptr, cols;
-  std::vector<PetscScalar> vals;
-};
-RowsCsr CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row);
+PatchOperator CompressRows(PetscInt n, const Triplets &t, const std::vector<PetscInt> &row);
 
 } // namespace boltnet
