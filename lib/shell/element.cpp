@@ -387,8 +387,35 @@ void ElementPressure(const Nodes &X, double p, ElementVector &F)
   SurfaceLoad(X, [p](const Vec3 &ndA) { return Scale(p, ndA); }, F);
 }
 
+namespace {
+
+// Y = Kaa^-1 Kau of the element as integrated (ElementCondensedModes).
+CondensedModes IncompatibleModes(const Quad &q, const ShellMaterial &mat, const ElementOptions &options)
+{
+  CondensedModes c;
+  if (options.membrane != Membrane::Incompatible) return c;
+  Stiffness S;
+  Integrate(q, mat, options, S, false);
+  double A[4][4];
+  for (int k = 0; k < 24; ++k)
+    for (int a = 0; a < 4; ++a) c.Y[4 * k + a] = S.Kau[a][k];
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) A[a][b] = S.Kaa[a][b];
+  Solve4(A, c.Y.data(), 24);
+  c.any = true;
+  return c;
+}
+
+} // namespace
+
+CondensedModes ElementCondensedModes(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options)
+{
+  CheckNoDirectors(options, V);
+  return IncompatibleModes(options.warping == Warping::Directors ? MakeQuad(X, V) : MakeRigidLinks(X).flat, mat, options);
+}
+
 GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options,
-                                  const ElementVector &u, double xi, double eta)
+                                  const ElementVector &u, double xi, double eta, const CondensedModes *kept)
 {
   CheckNoDirectors(options, V);
   Quad          q;
@@ -414,14 +441,11 @@ GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const Shel
     e.drill += B.d[k] * ul[k];
   }
   if (options.membrane == Membrane::Incompatible) { // recover the condensed amplitudes
-    Stiffness S;
-    Integrate(q, mat, options, S, false);
-    double alpha[4] = {}, A[4][4];
-    for (int a = 0; a < 4; ++a) {
-      for (int k = 0; k < 24; ++k) alpha[a] -= S.Kau[a][k] * ul[k];
-      for (int b = 0; b < 4; ++b) A[a][b] = S.Kaa[a][b];
-    }
-    Solve4(A, alpha, 1);
+    const CondensedModes c = kept ? *kept : IncompatibleModes(q, mat, options);
+    if (!c.any) throw std::invalid_argument("Shell element: the kept condensed modes are not those of an element with incompatible modes");
+    double alpha[4] = {};
+    for (int a = 0; a < 4; ++a)
+      for (int k = 0; k < 24; ++k) alpha[a] -= c.Y[4 * k + a] * ul[k];
     double G[3][4];
     IncompatibleRows(q, B.p, xi, eta, G);
     for (int i = 0; i < 3; ++i)

@@ -73,16 +73,18 @@ bool HomogeneousSection(const ShellMaterial &mat)
   return MaxAbs(mat.B) <= 1e-9 * a * t && MaxAbs(d) <= 1e-9 * a * t * t;
 }
 
-SectionResults ElementResults(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options, const ElementVector &u)
+SectionResults ElementResults(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options, const ElementVector &u,
+                              const CondensedModes *kept)
 {
   const ElementFrame f = MakeElementFrame(X);
-  return FromStrains(ElementStrains(X, V, mat, options, u, 0.0, 0.0), f.e1, f.e2, f.e3, mat);
+  return FromStrains(ElementStrains(X, V, mat, options, u, 0.0, 0.0, kept), f.e1, f.e2, f.e3, mat);
 }
 
-SectionResults ElementResults(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options, const TriVector &u)
+SectionResults ElementResults(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options, const TriVector &u,
+                              const CondensedModes *kept)
 {
   const TriFrame f = MakeElementFrame(X);
-  return FromStrains(ElementStrains(X, V, mat, options, u, 1.0 / 3, 1.0 / 3), f.e1, f.e2, f.e3, mat);
+  return FromStrains(ElementStrains(X, V, mat, options, u, 1.0 / 3, 1.0 / 3, kept), f.e1, f.e2, f.e3, mat);
 }
 
 SectionResults Rotated(const SectionResults &r, double phi)

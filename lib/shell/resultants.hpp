@@ -35,8 +35,11 @@ struct SectionResults {
 
 // At the centroid (xi = eta = 0; r = s = 1/3), in the element frame, with the element options and
 // directors the stiffness uses. Throws std::invalid_argument like ElementStrains.
-SectionResults ElementResults(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options, const ElementVector &u);
-SectionResults ElementResults(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options, const TriVector &u);
+// `kept`: the element's ElementCondensedModes (shell.hpp), when the caller keeps them between steps.
+SectionResults ElementResults(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options, const ElementVector &u,
+                              const CondensedModes *kept = nullptr);
+SectionResults ElementResults(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options, const TriVector &u,
+                              const CondensedModes *kept = nullptr);
 
 // The same results in axes turned by phi (radians) about e3: x' = cos(phi) e1 + sin(phi) e2.
 SectionResults Rotated(const SectionResults &r, double phi);

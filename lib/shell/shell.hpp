@@ -177,13 +177,26 @@ struct GeneralisedStrains {
   std::array<double, 2> shear;
   double drill;
 };
+/* The element's condensed internal modes in terms of its nodal dof, which is what ElementStrains
+   integrates the element for (most of its cost): a quadrilateral's four incompatible membrane modes
+   alpha = -Y u_q (Y = Kaa^-1 Kau, 4 x 24, u_q the dof of the element as integrated: the flat
+   element's under Warping::RigidLinks), a triangle's two bubble rotations q = P u (P = -Kbb^-1 Kbu,
+   2 x 18, the first 36 values). `any` is false where the element condenses nothing. They depend on
+   the geometry and the section only: a caller that evaluates the same element at every load step
+   keeps them (776 bytes) and passes them to ElementStrains, which then integrates nothing. */
+struct CondensedModes {
+  std::array<double, 96> Y{};
+  bool                   any = false;
+};
+CondensedModes ElementCondensedModes(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options);
+CondensedModes ElementCondensedModes(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options);
 GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const ShellMaterial &mat, const ElementOptions &options,
-                                  const ElementVector &u, double xi, double eta);
+                                  const ElementVector &u, double xi, double eta, const CondensedModes *kept = nullptr);
 GeneralisedStrains ElementStrains(const Nodes &X, const ShellMaterial &mat, const ElementOptions &options,
                                   const ElementVector &u, double xi, double eta);
 /* The nodal (compatible, bilinear) part only: no material needed. */
 GeneralisedStrains ElementStrains(const Nodes &X, const ElementVector &u, double xi, double eta);
 GeneralisedStrains ElementStrains(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options,
-                                  const TriVector &u, double r, double s);
+                                  const TriVector &u, double r, double s, const CondensedModes *kept = nullptr);
 
 } // namespace boltnet::shell

@@ -391,22 +391,34 @@ void ElementPressure(const TriNodes &X, double p, TriVector &F)
     for (int k = 0; k < 3; ++k) F[6 * i + k] = p * ndA[k] / 3;
 }
 
-GeneralisedStrains ElementStrains(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options,
-                                  const TriVector &u, double r, double s)
+CondensedModes ElementCondensedModes(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options)
 {
   const Tri t = MakeTri(X, V);
   Stiffness S;
   Opt       O{};
   Integrate(t, mat, options, S, &O);
+  CondensedModes c;
+  if (!S.bubble) return c;
+  double inv[2][2]; // the condensed bubble rotations: Kbb q4 = -Kbu u
+  BubbleInverse(S, inv);
+  for (int i = 0; i < 2; ++i)
+    for (int k = 0; k < 18; ++k) c.Y[18 * i + k] = -(inv[i][0] * S.K[18][k] + inv[i][1] * S.K[19][k]);
+  c.any = true;
+  return c;
+}
+
+GeneralisedStrains ElementStrains(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options,
+                                  const TriVector &u, double r, double s, const CondensedModes *kept)
+{
+  const Tri t = MakeTri(X, V);
+  Opt       O{};
+  if (options.triangle_membrane == TriangleMembrane::Optimal) O = MakeOpt(t, SectionInFrame(mat, t.f.e1, t.f.e2).A); // as Integrate
+  const CondensedModes c = kept ? *kept : ElementCondensedModes(X, V, mat, options);
   double ue[kCols] = {};
   for (int k = 0; k < 18; ++k) ue[k] = u[k];
-  if (S.bubble) { // the condensed bubble rotations: Kbb q4 = -Kbu u
-    double inv[2][2], rhs[2] = {};
-    BubbleInverse(S, inv);
+  if (c.any)
     for (int i = 0; i < 2; ++i)
-      for (int k = 0; k < 18; ++k) rhs[i] -= S.K[18 + i][k] * u[k];
-    for (int i = 0; i < 2; ++i) ue[18 + i] = inv[i][0] * rhs[0] + inv[i][1] * rhs[1];
-  }
+      for (int k = 0; k < 18; ++k) ue[18 + i] += c.Y[18 * i + k] * u[k];
   const bool         opt = options.triangle_membrane == TriangleMembrane::Optimal;
   const Rows         B   = RowsAt(t, opt ? &O : nullptr, options.triangle_shear, r, s);
   GeneralisedStrains e{};
