@@ -21,6 +21,13 @@ foreach(ranks 1 2 3)
             --length 150 --width 20 --thickness 2 --fz 1000 --fx 2000)
   set_tests_properties(strip_cantilever_stresses_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_cantilever_np${ranks})
 endforeach()
+# The same closed forms with each step rebuilding its elements (-output_stresses_cache false) instead
+# of applying the operators kept from the first step: both paths, on the strip's two steps.
+boltnet_run(strip_cantilever_nocache 2 ${BOLTNET_TEST_SCENES}/strip-cantilever.yaml -output_stresses_cache false)
+add_test(NAME strip_cantilever_nocache_stresses_np2
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_stresses.py ${BOLTNET_OUT}/strip_cantilever_nocache_np2
+          --length 150 --width 20 --thickness 2 --fz 1000 --fx 2000)
+set_tests_properties(strip_cantilever_nocache_stresses_np2 PROPERTIES FIXTURES_REQUIRED strip_cantilever_nocache_np2)
 foreach(ranks 2 3)
   add_test(NAME strip_cantilever_fields_np${ranks}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fields.py ${BOLTNET_OUT}/strip_cantilever_np${ranks}

@@ -381,6 +381,7 @@ PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject
   PetscFunctionBeginUser;
   PetscCall(PetscOptionsBool("-output_fields", "Write fields.h5, fields.xdmf and joints.xdmf per converged step (shell displacement/rotation and element results, joint lines with state); scenes with no shell patch (rigid only) have no fields", "", o->fields, &o->fields, nullptr));
   PetscCall(PetscOptionsBool("-output_stresses", "With the fields, the element resultants N, M, Q, surface strains and stresses of every step", "", o->results, &o->results, nullptr));
+  PetscCall(PetscOptionsBool("-output_stresses_cache", "Keep each element's condensed modes (776 bytes an element) from the second step on, so that later steps' element results do not integrate the elements again; false saves the memory", "", o->results_cache, &o->results_cache, nullptr));
   PetscCall(PetscOptionsReal("-output_bypass_width", "Width w (mm) of the strip whose force balance gives the bypass load (bypass.csv, fields.h5); 0: 6 -coupling_radius", "", o->bypass_width, &o->bypass_width, nullptr));
   PetscCheck(o->bypass_width >= 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-output_bypass_width %g: a width must be positive (or 0 for the default)", (double)o->bypass_width);
   PetscCall(PetscOptionsBool("-output_fields_gather", "Write the fields from rank 0 after gathering them (the former writer, kept to measure against; displacements only)", "", o->gather, &o->gather, nullptr));
@@ -395,6 +396,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
     ff->mapped = true;
   }
   StepFields f;
+  ff->map.results_cache = ff->opt.results_cache;
   PetscCall(AssemblyStepFields(a, ff->map, ff->opt.results, &f));
   // The file stays open and is flushed after each step, so that a run that stops leaves every step
   // before it readable (docs/output.md, "When it is written").

@@ -64,6 +64,7 @@ PetscErrorCode UnusedOptionsAsError(MPI_Comm comm, const char program[], PetscBo
 struct FieldsOptions {
   PetscBool fields  = PETSC_TRUE;  // -output_fields
   PetscBool results = PETSC_TRUE;  // -output_stresses: element resultants, strains and stresses
+  PetscBool results_cache = PETSC_TRUE; // -output_stresses_cache: keep each element's condensed modes
   PetscBool gather  = PETSC_FALSE; // -output_fields_gather: the writer that gathers to rank 0
   PetscReal bypass_width = 0;      // -output_bypass_width (mm); 0: 6 -coupling_radius (3 diameters)
 };

@@ -222,18 +222,44 @@ PetscErrorCode FieldSpaceColumns(FieldSpace &s, Vec packed, PetscInt K, PetscInt
   PetscFunctionReturn(0);
 }
 
-shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u)
+namespace {
+
+// A triangle's nodes and directors in the shell element's types.
+std::pair<shell::TriNodes, shell::TriDirectors> TriangleOf(const ElementGeometry &g)
+{
+  shell::TriNodes     X;
+  shell::TriDirectors V;
+  std::copy(g.X.begin(), g.X.begin() + 3, X.begin());
+  std::copy(g.V.begin(), g.V.begin() + 3, V.begin());
+  return {X, V};
+}
+
+shell::ElementOptions OptionsOf(double drill)
 {
   shell::ElementOptions o;
   o.drill = drill; // the options of the patch operator (ElementMatrixOf, patch/operator.cpp)
-  if (g.n == 4) return shell::ElementResults(g.X, g.directors ? &g.V : nullptr, mat, o, u);
-  shell::TriNodes     X;
-  shell::TriDirectors V;
-  shell::TriVector    ut;
-  std::copy(g.X.begin(), g.X.begin() + 3, X.begin());
-  std::copy(g.V.begin(), g.V.begin() + 3, V.begin());
+  return o;
+}
+
+} // namespace
+
+shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u,
+                                       const shell::CondensedModes *kept)
+{
+  const shell::ElementOptions o = OptionsOf(drill);
+  if (g.n == 4) return shell::ElementResults(g.X, g.directors ? &g.V : nullptr, mat, o, u, kept);
+  const auto       [X, V] = TriangleOf(g);
+  shell::TriVector ut;
   std::copy(u.begin(), u.begin() + 18, ut.begin());
-  return shell::ElementResults(X, g.directors ? &V : nullptr, mat, o, ut);
+  return shell::ElementResults(X, g.directors ? &V : nullptr, mat, o, ut, kept);
+}
+
+shell::CondensedModes CondensedModesOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill)
+{
+  const shell::ElementOptions o = OptionsOf(drill);
+  if (g.n == 4) return shell::ElementCondensedModes(g.X, g.directors ? &g.V : nullptr, mat, o);
+  const auto [X, V] = TriangleOf(g);
+  return shell::ElementCondensedModes(X, g.directors ? &V : nullptr, mat, o);
 }
 
 std::array<shell::Vec3, 3> ElementAxesOf(const ElementGeometry &g)
@@ -311,16 +337,29 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   PetscCall(VecGetArrayRead(m.ghost_dof, &gd));
   PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
+    // The elements do not change between steps: their condensed modes, most of the results' work,
+    // are computed once and kept (unless the writer was asked to save that memory), from the second
+    // step on: a run of one step would only pay the memory.
+    const bool keep = m.results_cache && m.results_steps++ > 0;
+    if (keep && m.modes.size() != m.elements.size()) {
+      m.modes.clear();
+      m.modes.reserve(m.elements.size());
+      for (const FieldElement &e : m.elements) {
+        const ShellPatch &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
+        m.modes.push_back(CondensedModesOf(e.geom, sp.material, sp.drill));
+      }
+    }
     f->results.reserve(m.elements.size());
-    for (const FieldElement &e : m.elements) {
-      const ShellPatch   &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
-      const double       *d  = disp[e.owned].data();
+    for (size_t i = 0; i < m.elements.size(); ++i) {
+      const FieldElement  &e = m.elements[i];
+      const double        *d = disp[e.owned].data();
       shell::ElementVector ue{};
       for (int k = 0; k < e.nn; ++k) {
         const PetscInt g = e.local[k] < 0 ? m.ghost_index.at(e.node[k]) : -1;
         for (int c = 0; c < 6; ++c) ue[6 * k + c] = g < 0 ? d[6 * e.local[k] + c] : gd[6 * g + c];
       }
-      f->results.push_back(ElementResultsOf(e.geom, sp.material, sp.drill, ue));
+      const ShellPatch &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
+      f->results.push_back(ElementResultsOf(e.geom, sp.material, sp.drill, ue, keep ? &m.modes[i] : nullptr));
     }
     PetscFunctionReturn(0);
   }));

@@ -51,6 +51,9 @@ struct FieldMap {
   PetscInt                           ntriangles = 0;   // over all ranks: the rest are quadrilaterals
   std::vector<std::array<PetscInt, 2>> node_src;       // by owned node: (position in owned patches, patch node)
   std::vector<FieldElement>          elements;         // by owned element
+  std::vector<shell::CondensedModes> modes;            //   and its condensed modes, from the second step with results
+  bool                               results_cache = true; // keep modes (else each step integrates the elements again)
+  int                                results_steps = 0;    // steps with element results so far
   std::vector<PetscInt>              ghosts;           // natural numbers of the other patches' nodes
   std::map<PetscInt, PetscInt>       ghost_index;      //   and their positions
   VecScatter                         ghost_scatter = nullptr; // natural (block 6) -> ghosts
@@ -122,7 +125,11 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
 const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldElement &e);
 // The results at the centroid of a quadrilateral or triangle (u: 6 dof per node, a triangle's in
 // the first 18), with the directors and drilling factor of its stiffness.
-shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u);
+// `kept`: the element's CondensedModesOf, kept by the caller between steps.
+shell::SectionResults ElementResultsOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill, const shell::ElementVector &u,
+                                       const shell::CondensedModes *kept = nullptr);
+// The part of the results' work that does not depend on u (shell::ElementCondensedModes).
+shell::CondensedModes CondensedModesOf(const ElementGeometry &g, const shell::ShellMaterial &mat, double drill);
 // The element frame's axes e1, e2, e3 (shell::MakeElementFrame) and the element's area.
 std::array<shell::Vec3, 3> ElementAxesOf(const ElementGeometry &g);
 double                     ElementArea(const ElementGeometry &g);
