@@ -16,6 +16,18 @@ add_test(NAME restart_killed_fig3a_np2
 set_tests_properties(restart_killed_fig3a_np1 PROPERTIES PROCESSORS 1 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np1)
 set_tests_properties(restart_killed_fig3a_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np2)
 
+# A kill while HDF5 writes a step's fields can leave that step's group unreadable and unremovable
+# ("link count would be negative", "bad object header version number"): fig3a on 2 ranks with a
+# checkpoint every 40 steps runs to its end (the last checkpoint at step 80, fields up to 90), step 81
+# of fields.h5 is damaged (damage_fields.py), and the restart from step 80 rebuilds fields.h5 from
+# steps 1 to 80 and ends with the uninterrupted run's joints.csv (1e-12) and fields (1e-10, as
+# restart_killed_fig3a_np2). Before the rebuild the restart stopped on the damaged step (exit 1).
+add_test(NAME restart_damaged_fields_fig3a_np2
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check_restart_damaged_fields.sh ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:boltnet_driver> 2 40
+          ${BOLTNET_OUT}/fig3a_np2 ${BOLTNET_OUT}/restart_damaged_fig3a_np2 ${BOLTNET_SCENES}/fig3a.joints.csv
+          -- -scene ${BOLTNET_SCENES}/fig3a.yaml)
+set_tests_properties(restart_damaged_fields_fig3a_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np2)
+
 # The secant predictor's other point survives a restart (docs/solver.md, "The first iterate of a
 # step"): fig3c in 2,000 steps per segment, whose steps 3,001 to 4,000 take one Newton iteration from
 # the prediction and two without, killed after step 3,100 (its only checkpoint; 2,900 steps, over a

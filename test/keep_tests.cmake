@@ -51,9 +51,8 @@ endforeach()
 # Step 1, the first checkpoint: the 30 steps take well under a second, and a run killed after a later
 # one had been seen to finish first on a busy machine. The 29 steps after the restart are compared:
 # what is kept depends on the iterates of the current solve alone, not on what a process remembers.
-# Without fields: a kill while a step's fields are being written can leave fields.h5 with a group
-# HDF5 refuses to remove ("link count would be negative"), and the restart then stops; that is not
-# this test's subject.
+# Without fields: the fields' restart is restart_killed_fig3a_* and restart_damaged_fields_fig3a_np2's
+# subject, not this test's.
 boltnet_expect(run_fig3b_keep 1 --match "30 steps converged"
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3b.yaml -load_steps 30 -output_fields false -output_dir ${BOLTNET_OUT}/fig3b_keep_np1)
 set_tests_properties(run_fig3b_keep_np1 PROPERTIES FIXTURES_SETUP fig3b_keep_np1)

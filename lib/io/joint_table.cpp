@@ -2,6 +2,7 @@
 // file on the assembly's communicator (MPI-IO when HDF5 is parallel, as Debian's is); the datasets
 // are HDF5's own: chunked, their step dimension unlimited, each step's rows written by every rank
 // at its own offset in one collective H5Dwrite per dataset.
+#include "io/h5id.hpp"
 #include "io/joint_table.hpp"
 #include "joint/law.hpp"
 
@@ -20,20 +21,6 @@ constexpr PetscInt kPacked = 16;
 // for models up to that size.
 constexpr hsize_t kChunkRows = 16384;
 constexpr int     kStates    = 5; // State's codes 0..4 (joint/law.hpp)
-
-// An HDF5 identifier closed when it goes out of scope.
-struct H5Id {
-  hid_t id;
-  herr_t (*close)(hid_t);
-  H5Id(hid_t i, herr_t (*c)(hid_t)) : id(i), close(c) {}
-  H5Id(const H5Id &)            = delete;
-  H5Id &operator=(const H5Id &) = delete;
-  ~H5Id()
-  {
-    if (id >= 0) close(id);
-  }
-  operator hid_t() const { return id; }
-};
 
 struct Dataset {
   const char *name;

@@ -4,12 +4,14 @@
 // rank, are then reopened by every rank.
 #include "core/errors.hpp"
 #include "io/checkpoint_file.hpp"
+#include "io/h5id.hpp"
 
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace boltnet {
 namespace {
@@ -67,15 +69,15 @@ std::string BypassLength(const std::string &path, PetscInt k, std::uintmax_t *le
   return "";
 }
 
-// Rank 0: fields.h5 opened (for writing with the former writer, which rank 0 alone writes; to read
-// otherwise), with step k in it, and the sizes of its model; the steps after k are not yet dropped.
+// Rank 0: fields.h5 opened to read, with step k in it, and the sizes of its model; the steps after
+// k are not yet dropped (TrimFields).
 PetscErrorCode OpenFields(FieldsFile *ff, PetscInt k)
 {
   PetscBool has;
   PetscInt  bs, n;
   PetscFunctionBeginUser;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // HDF5's own error stack: the message says it
-  PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/fields.h5").c_str(), ff->opt.gather ? FILE_MODE_APPEND : FILE_MODE_READ, &ff->viewer));
+  PetscCall(PetscViewerHDF5Open(PETSC_COMM_SELF, (ff->dir + "/fields.h5").c_str(), FILE_MODE_READ, &ff->viewer));
   PetscCall(PetscViewerHDF5HasGroup(ff->viewer, FieldsStepGroup(k).c_str(), &has));
   PetscCheck(has, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "it holds no step %" PetscInt_FMT, k);
   PetscCall(PetscViewerHDF5PushGroup(ff->viewer, "/joints"));
@@ -94,21 +96,63 @@ PetscErrorCode OpenFields(FieldsFile *ff, PetscInt k)
   PetscFunctionReturn(0);
 }
 
-// The steps after k out of fields.h5 (a killed run may have written some): by every rank that has
-// the file open (HDF5 changes a file's structure in collective calls).
-PetscErrorCode DropLaterFields(FieldsFile *ff, PetscInt k)
+// fields.h5 rebuilt without the steps after k: its groups but /steps, and /steps up to step k,
+// copied object by object (H5Ocopy) into path.tmp, which then replaces it. "" or why not (path.tmp
+// removed, path as it was). The steps up to k were flushed whole before the checkpoint was written
+// (OutputStep precedes CheckpointWrite), so a kill while a later step was written leaves them
+// readable even where that step's own objects are not.
+std::string RebuildFields(const std::string &path, PetscInt k)
 {
-  hid_t     file;
-  PetscBool has = PETSC_TRUE;
-  PetscFunctionBeginUser;
-  PetscCall(PetscViewerHDF5GetFileId(ff->viewer, &file));
-  for (PetscInt s = k + 1; has; ++s) {
-    const std::string g = FieldsStepGroup(s);
-    PetscCall(PetscViewerHDF5HasGroup(ff->viewer, g.c_str(), &has));
-    if (has) PetscCheck(H5Ldelete(file, g.c_str(), H5P_DEFAULT) >= 0, PETSC_COMM_SELF, PETSC_ERR_LIB, "cannot remove %s", g.c_str());
+  const std::string tmp = path + ".tmp";
+  bool              ok  = true;
+  {
+    H5Id src(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (src < 0) return "HDF5 cannot open it";
+    H5Id dst(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+    if (dst < 0) return "HDF5 cannot create " + tmp;
+    std::vector<std::string> top;
+    auto                     collect = [](hid_t, const char *name, const H5L_info_t *, void *names) -> herr_t {
+      static_cast<std::vector<std::string> *>(names)->push_back(name);
+      return 0;
+    };
+    ok = H5Literate(src, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, collect, &top) >= 0;
+    for (const std::string &name : top)
+      if (ok && name != "steps") ok = H5Ocopy(src, name.c_str(), dst, name.c_str(), H5P_DEFAULT, H5P_DEFAULT) >= 0;
+    if (ok) {
+      H5Id steps(H5Gcreate2(dst, "steps", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+      ok = steps >= 0;
+    }
+    for (PetscInt s = 1; ok && s <= k; ++s) ok = H5Ocopy(src, FieldsStepGroup(s).c_str(), dst, FieldsStepGroup(s).c_str(), H5P_DEFAULT, H5P_DEFAULT) >= 0;
   }
-  PetscCall(PetscViewerFlush(ff->viewer));
-  PetscFunctionReturn(0);
+  std::error_code ec;
+  if (ok) std::filesystem::rename(tmp, path, ec);
+  if (!ok || ec) {
+    std::filesystem::remove(tmp, ec);
+    return ok ? "cannot replace it by " + tmp : "HDF5 cannot copy its steps 1 to " + std::to_string(k) + " into " + tmp;
+  }
+  return "";
+}
+
+// Rank 0: the steps after k out of fields.h5 (a killed run may have written some), with serial
+// HDF5 before any rank opens the file to write. In place where HDF5 can remove them; a kill while
+// HDF5 wrote a step can leave that step's objects inconsistent (H5Ldelete then fails: "link count
+// would be negative"), and the file is then rebuilt from the steps it keeps. "" or why not.
+std::string TrimFields(const std::string &path, PetscInt k)
+{
+  bool ok = true, any = false;
+  {
+    H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+    if (file < 0) return "HDF5 cannot open it to write";
+    for (PetscInt s = k + 1; ok; ++s) {
+      const std::string g   = FieldsStepGroup(s);
+      const htri_t      has = H5Lexists(file, "/steps", H5P_DEFAULT) > 0 ? H5Lexists(file, g.c_str(), H5P_DEFAULT) : 0;
+      if (has == 0) break;
+      any = true;
+      ok  = has > 0 && H5Ldelete(file, g.c_str(), H5P_DEFAULT) >= 0;
+    }
+    if (any && ok) ok = H5Fflush(file, H5F_SCOPE_GLOBAL) >= 0;
+  }
+  return ok ? "" : RebuildFields(path, k);
 }
 
 // Rank 0: everything checked, then changed; "" or why not.
@@ -123,8 +167,7 @@ std::string Resume(BoltnetAssembly a, Output *out)
   ErrorLog log;
   if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
   if (out->fields && OpenFields(&out->ff, k)) why = "Cannot continue the fields in " + out->dir + "/fields.h5: " + ErrorText(log) + " (-output_fields false restarts without fields)";
-  if (why.empty() && out->fields && out->ff.opt.gather && DropLaterFields(&out->ff, k)) why = "Cannot remove the steps after step " + std::to_string(k) + " from " + out->dir + "/fields.h5: " + ErrorText(log);
-  if (!why.empty() || !out->ff.opt.gather) PetscViewerDestroy(&out->ff.viewer); // a viewer whose file did not open fails to close too: not the error to report
+  PetscViewerDestroy(&out->ff.viewer); // a viewer whose file did not open fails to close too: not the error to report
   PetscPopErrorHandler();
   if (!why.empty()) return why;
   // bypass.csv (the element results' companion) goes on after step k, if the run wrote one.
@@ -135,6 +178,19 @@ std::string Resume(BoltnetAssembly a, Output *out)
   if (withBypass) {
     why = BypassLength(bypass, k, &bkeep);
     if (!why.empty()) return why;
+  }
+  // Everything checked: fields.h5 first, the one change that can still fail for a reason of its own.
+  if (out->fields) {
+    const std::string trim = TrimFields(out->dir + "/fields.h5", k);
+    if (!trim.empty()) return "Cannot remove the steps after step " + std::to_string(k) + " from " + out->dir + "/fields.h5: " + trim + " (-output_fields false restarts without fields)";
+    // The former writer's rank 0 writes the file alone: it reopens it (every rank does, in
+    // OutputResume, for the parallel one).
+    if (out->ff.opt.gather) {
+      if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
+      if (PetscViewerHDF5Open(PETSC_COMM_SELF, (out->dir + "/fields.h5").c_str(), FILE_MODE_APPEND, &out->ff.viewer)) why = "Cannot continue the fields in " + out->dir + "/fields.h5: " + ErrorText(log);
+      PetscPopErrorHandler();
+      if (!why.empty()) return why;
+    }
   }
   std::filesystem::remove(out->dir + "/summary.json", ec); // this run writes its own at the end
   if (out->files.csv) {
@@ -189,7 +245,6 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
   if (out->fields && !out->ff.opt.gather) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     PetscCall(PetscViewerHDF5Open(comm, (dir + "/fields.h5").c_str(), FILE_MODE_APPEND, &out->ff.viewer));
-    PetscCall(DropLaterFields(&out->ff, (PetscInt)a->steps.size()));
   }
   if (out->files.hdf5) PetscCall(JointTableReopen(a, dir + "/joints.h5", (PetscInt)a->steps.size(), &out->table));
   PetscFunctionReturn(0);
