@@ -17,7 +17,7 @@ namespace {
 // missing here only makes a restart refuse, naming it.
 bool PrintOnly(const std::string &name)
 {
-  static const char *const exact[] = {"scene", "output_dir", "output_fields", "restart", "checkpoint_every", "checkpoint_file", "options_left", "help", "version", "joint_monitor", "history", "fp_trap", "no_signal_handler", "check_pointer_intensity", "checkstack", "objects_dump", "skip_petscrc", "error_output_stdout", "on_error_abort", "on_error_attach_debugger", "start_in_debugger", "stop_for_debugger", "debugger_ranks"};
+  static const char *const exact[] = {"scene", "output_dir", "output_fields", "output_stresses_cache", "restart", "checkpoint_every", "checkpoint_file", "options_left", "help", "version", "joint_monitor", "history", "fp_trap", "no_signal_handler", "check_pointer_intensity", "checkstack", "objects_dump", "skip_petscrc", "error_output_stdout", "on_error_abort", "on_error_attach_debugger", "start_in_debugger", "stop_for_debugger", "debugger_ranks"};
   for (const char *e : exact)
     if (name == e) return true;
   static const char *const prefixes[] = {"malloc", "log", "info", "memory_", "options_", "viewer_", "draw"};
