@@ -396,8 +396,8 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
     ff->mapped = true;
   }
   StepFields f;
-  ff->map.results_cache = ff->opt.results_cache;
-  PetscCall(AssemblyStepFields(a, ff->map, ff->opt.results, &f));
+  // The elements' condensed modes are kept from the second step on (-output_stresses_cache).
+  PetscCall(AssemblyStepFields(a, ff->map, ff->opt.results, ff->opt.results_cache && !ff->steps.empty(), &f));
   // The file stays open and is flushed after each step, so that a run that stops leaves every step
   // before it readable (docs/output.md, "When it is written").
   const bool first = ff->steps.empty();

@@ -143,9 +143,9 @@ std::string TrimFields(const std::string &path, PetscInt k)
   {
     H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
     if (file < 0) return "HDF5 cannot open it to write";
-    for (PetscInt s = k + 1; ok; ++s) {
+    for (PetscInt s = k + 1; ok; ++s) { // OpenFields found /steps, with step k in it
       const std::string g   = FieldsStepGroup(s);
-      const htri_t      has = H5Lexists(file, "/steps", H5P_DEFAULT) > 0 ? H5Lexists(file, g.c_str(), H5P_DEFAULT) : 0;
+      const htri_t      has = H5Lexists(file, g.c_str(), H5P_DEFAULT);
       if (has == 0) break;
       any = true;
       ok  = has > 0 && H5Ldelete(file, g.c_str(), H5P_DEFAULT) >= 0;

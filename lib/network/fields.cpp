@@ -288,7 +288,7 @@ const shell::ShellMaterial &FieldElementMaterial(BoltnetAssembly a, const FieldE
   return a->layout.shells.at(a->patches.owned[e.owned].index).material;
 }
 
-PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, StepFields *f)
+PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, bool keep_modes, StepFields *f)
 {
   Vec                Xl;
   const PetscScalar *x;
@@ -338,10 +338,8 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     // The elements do not change between steps: their condensed modes, most of the results' work,
-    // are computed once and kept (unless the writer was asked to save that memory), from the second
-    // step on: a run of one step would only pay the memory.
-    const bool keep = m.results_cache && m.results_steps++ > 0;
-    if (keep && m.modes.size() != m.elements.size()) {
+    // are computed once when they are to be kept.
+    if (keep_modes && m.modes.size() != m.elements.size()) {
       m.modes.clear();
       m.modes.reserve(m.elements.size());
       for (const FieldElement &e : m.elements) {
@@ -359,7 +357,7 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
         for (int c = 0; c < 6; ++c) ue[6 * k + c] = g < 0 ? d[6 * e.local[k] + c] : gd[6 * g + c];
       }
       const ShellPatch &sp = a->layout.shells.at(a->patches.owned[e.owned].index);
-      f->results.push_back(ElementResultsOf(e.geom, sp.material, sp.drill, ue, keep ? &m.modes[i] : nullptr));
+      f->results.push_back(ElementResultsOf(e.geom, sp.material, sp.drill, ue, keep_modes ? &m.modes[i] : nullptr));
     }
     PetscFunctionReturn(0);
   }));

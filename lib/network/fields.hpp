@@ -51,9 +51,7 @@ struct FieldMap {
   PetscInt                           ntriangles = 0;   // over all ranks: the rest are quadrilaterals
   std::vector<std::array<PetscInt, 2>> node_src;       // by owned node: (position in owned patches, patch node)
   std::vector<FieldElement>          elements;         // by owned element
-  std::vector<shell::CondensedModes> modes;            //   and its condensed modes, from the second step with results
-  bool                               results_cache = true; // keep modes (else each step integrates the elements again)
-  int                                results_steps = 0;    // steps with element results so far
+  std::vector<shell::CondensedModes> modes;            //   and its condensed modes, once AssemblyStepFields keeps them
   std::vector<PetscInt>              ghosts;           // natural numbers of the other patches' nodes
   std::map<PetscInt, PetscInt>       ghost_index;      //   and their positions
   VecScatter                         ghost_scatter = nullptr; // natural (block 6) -> ghosts
@@ -106,8 +104,11 @@ struct StepFields {
   std::vector<shell::SectionResults> results;
   std::vector<JointLine>             lines;
 };
-// Collective: the last converged point a->X. With results false, no element results.
-PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, StepFields *f);
+// Collective: the last converged point a->X. With results false, no element results. With
+// keep_modes, the elements' condensed modes are computed once, kept in m.modes and used from then on
+// (the field writer asks for it from its second step: a run of one step would only pay the memory);
+// without, every element is integrated afresh.
+PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, bool keep_modes, StepFields *f);
 
 // The bypass load beside each fastener (docs/output.md, "Bypass"), one row per joint side on a shell
 // part, for the joints this rank owns.

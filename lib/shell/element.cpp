@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace boltnet::shell {
@@ -441,7 +442,9 @@ GeneralisedStrains ElementStrains(const Nodes &X, const Directors *V, const Shel
     e.drill += B.d[k] * ul[k];
   }
   if (options.membrane == Membrane::Incompatible) { // recover the condensed amplitudes
-    const CondensedModes c = kept ? *kept : IncompatibleModes(q, mat, options);
+    std::optional<CondensedModes> fresh; // integrated here only when the caller keeps none
+    if (!kept) fresh = IncompatibleModes(q, mat, options);
+    const CondensedModes &c = kept ? *kept : *fresh;
     if (!c.any) throw std::invalid_argument("Shell element: the kept condensed modes are not those of an element with incompatible modes");
     double alpha[4] = {};
     for (int a = 0; a < 4; ++a)

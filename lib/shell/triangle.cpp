@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace boltnet::shell {
@@ -391,9 +392,11 @@ void ElementPressure(const TriNodes &X, double p, TriVector &F)
     for (int k = 0; k < 3; ++k) F[6 * i + k] = p * ndA[k] / 3;
 }
 
-CondensedModes ElementCondensedModes(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options)
+namespace {
+
+// P = -Kbb^-1 Kbu of the triangle t (ElementCondensedModes).
+CondensedModes BubbleModes(const Tri &t, const ShellMaterial &mat, const ElementOptions &options)
 {
-  const Tri t = MakeTri(X, V);
   Stiffness S;
   Opt       O{};
   Integrate(t, mat, options, S, &O);
@@ -407,13 +410,22 @@ CondensedModes ElementCondensedModes(const TriNodes &X, const TriDirectors *V, c
   return c;
 }
 
+} // namespace
+
+CondensedModes ElementCondensedModes(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options)
+{
+  return BubbleModes(MakeTri(X, V), mat, options);
+}
+
 GeneralisedStrains ElementStrains(const TriNodes &X, const TriDirectors *V, const ShellMaterial &mat, const ElementOptions &options,
                                   const TriVector &u, double r, double s, const CondensedModes *kept)
 {
   const Tri t = MakeTri(X, V);
   Opt       O{};
   if (options.triangle_membrane == TriangleMembrane::Optimal) O = MakeOpt(t, SectionInFrame(mat, t.f.e1, t.f.e2).A); // as Integrate
-  const CondensedModes c = kept ? *kept : ElementCondensedModes(X, V, mat, options);
+  std::optional<CondensedModes> fresh; // integrated here only when the caller keeps none
+  if (!kept) fresh = BubbleModes(t, mat, options);
+  const CondensedModes &c = kept ? *kept : *fresh;
   double ue[kCols] = {};
   for (int k = 0; k < 18; ++k) ue[k] = u[k];
   if (c.any)
