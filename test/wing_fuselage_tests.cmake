@@ -97,3 +97,14 @@ set_tests_properties(wing_make_bad_radius_np1 PROPERTIES FIXTURES_REQUIRED wing_
 add_test(NAME wing_make_bad_radius_writes_nothing
   COMMAND sh -c "test -d \"$0\" && test ! -e \"$0/bad.yaml\" && test ! -e \"$0/bad-mesh\" && test ! -e \"$0/.bad-mesh.tmp\"" ${_wf}/bad)
 set_tests_properties(wing_make_bad_radius_writes_nothing PROPERTIES FIXTURES_REQUIRED wing_bad_radius)
+
+# Each shell part is read and laid out by one rank (lib/patch/layout.cpp): on 2 and 3 ranks every
+# part of the tiny junction is read once, no rank reads them all, and the nodes read add up to the
+# parts' nodes counted in the Gmsh files themselves (check_read_per_rank.py).
+foreach(ranks 2 3)
+  add_test(NAME wing_tiny_read_per_rank_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_read_per_rank.py ${_wf}/tiny.yaml ${ranks}
+            -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${_wf}/tiny.yaml
+               -output_dir ${BOLTNET_OUT}/wing_tiny_read_np${ranks} -load_table 1 -load_steps 1 -output_fields false -info)
+  set_tests_properties(wing_tiny_read_per_rank_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_tiny_scene PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}")
+endforeach()

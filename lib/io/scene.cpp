@@ -143,7 +143,12 @@ PetscErrorCode ShellCorrection(MPI_Comm comm, BoltnetAssembly a, const std::stri
       spec.sheet[i].direction = {dir[0] * e1[0] + dir[1] * e1[1] + dir[2] * e1[2], dir[0] * e2[0] + dir[1] * e2[1] + dir[2] * e2[2], 0.0};
     }
     if (sc.h > 0) spec.hx[i] = spec.hy[i] = sc.h;
-    else PetscCall(identify::FootprintElementSize(comm, sp->mesh, fj.x, fj.n, fj.t1, radius, &spec.hx[i], &spec.hy[i]));
+    else {
+      // A part read later (ShellPart::read) is read here for the measurement and not kept.
+      ShellMesh read;
+      if (sp->read) PetscCall(Collective(comm, "reading a mesh", [&] { return sp->read(&read); }));
+      PetscCall(identify::FootprintElementSize(comm, sp->read ? read : sp->mesh, fj.x, fj.n, fj.t1, radius, &spec.hx[i], &spec.hy[i]));
+    }
   }
   spec.d        = o.g.d;
   spec.width    = sc.width;
@@ -388,9 +393,10 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       continue;
     }
     // Shell patches: a generated plate (corner x, y, z; lx, ly; nx by ny elements) or a Gmsh part.
+    // The mesh is read only by the rank that lays the part out (patch/layout.hpp): here the row is
+    // checked, and read() keeps what it needs to make the mesh and to name this line in its errors.
     std::string          matname;
     shell::ShellMaterial mat;
-    ShellMesh            mesh;
     PetscCall(Cell(comm, patches, r, "material", &matname));
     PetscCheck(!matname.empty(), comm, PETSC_ERR_USER_INPUT, "%s line %d: a %s patch needs a material", patches.path.c_str(), patches.lines[r], kind.c_str());
     PetscCall(MaterialFromOptions(comm, matname, &mat));
@@ -413,7 +419,11 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       PetscCheck(elements.empty() || elements == "quad" || elements == "tri" || elements == "mixed", comm, PETSC_ERR_USER_INPUT, "%s line %d, column 'elements': '%s' is not quad, tri or mixed", patches.path.c_str(), patches.lines[r], elements.c_str());
       if (elements == "tri") pe = PlateElements::Triangles;
       if (elements == "mixed") pe = PlateElements::Mixed;
-      PetscCall(Input(comm, "reading the scene", [&] { mesh = RectanglePlate(x[0], x[1], lx, ly, (int)nx, (int)ny, x[2], pe); }));
+      const std::array<double, 3> at = {x[0], x[1], x[2]};
+      PetscCall(AssemblyAddShellRead(a, id, (std::int64_t)(nx + 1) * (ny + 1), [at, lx, ly, nx, ny, pe](ShellMesh *mesh) -> PetscErrorCode {
+        *mesh = RectanglePlate(at[0], at[1], lx, ly, (int)nx, (int)ny, at[2], pe);
+        return PetscErrorCode(0);
+      }, mat));
     } else {
       std::string file, part;
       PetscCall(Cell(comm, patches, r, "mesh", &file));
@@ -421,22 +431,29 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       // A relative mesh path is relative to the patches table that names it.
       const std::string tdir = std::filesystem::path(patches.path).parent_path().string();
       if (!file.empty() && file[0] != '/' && !tdir.empty()) file = tdir + "/" + file;
-      std::map<std::string, ShellMesh> parts;
-      std::string                      why;
-      try {
-        parts = ReadGmsh(file);
-      } catch (const std::exception &e) {
-        why = e.what();
-      }
-      PetscCheck(why.empty(), comm, PETSC_ERR_USER_INPUT, "%s line %d: %s", patches.path.c_str(), patches.lines[r], why.c_str());
-      PetscCheck(parts.count(part), comm, PETSC_ERR_USER_INPUT, "%s line %d: mesh '%s' has no part (physical surface) '%s'", patches.path.c_str(), patches.lines[r], file.c_str(), part.c_str());
-      mesh = parts[part];
-      scene_nodes += (std::int64_t)mesh.x.size();
-      PetscCheck(scene_nodes <= limits::kMaxSceneNodes, comm, PETSC_ERR_USER_INPUT, "%s line %d: the shell patches so far have %lld nodes, more than the limit of %lld (docs/scenes.md, \"Limits\")", patches.path.c_str(), patches.lines[r], (long long)scene_nodes, (long long)limits::kMaxSceneNodes);
-      for (auto &xn : mesh.x)
-        for (int k = 0; k < 3; ++k) xn[k] += x[k]; // x, y, z: where the part is placed
+      std::error_code      ec;
+      const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+      PetscCheck(!ec && std::ifstream(file).good(), comm, PETSC_ERR_USER_INPUT, "%s line %d: Cannot read the mesh file '%s'", patches.path.c_str(), patches.lines[r], file.c_str());
+      const std::array<double, 3> at    = {x[0], x[1], x[2]};
+      const std::string           where = patches.path + " line " + std::to_string(patches.lines[r]);
+      PetscCall(AssemblyAddShellRead(a, id, (std::int64_t)(bytes / 100), [at, file, part, where](ShellMesh *mesh) -> PetscErrorCode {
+        std::map<std::string, ShellMesh> parts;
+        std::string                      why;
+        PetscFunctionBeginUser;
+        try {
+          parts = ReadGmsh(file);
+        } catch (const std::exception &e) {
+          why = e.what();
+        }
+        PetscCheck(why.empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: %s", where.c_str(), why.c_str());
+        PetscCheck(parts.count(part), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: mesh '%s' has no part (physical surface) '%s'", where.c_str(), file.c_str(), part.c_str());
+        *mesh = std::move(parts[part]);
+        PetscCheck((std::int64_t)mesh->x.size() <= limits::kMaxSceneNodes, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: part '%s' has %zu nodes, more than the limit of %lld (docs/scenes.md, \"Limits\")", where.c_str(), part.c_str(), mesh->x.size(), (long long)limits::kMaxSceneNodes);
+        for (auto &xn : mesh->x)
+          for (int k = 0; k < 3; ++k) xn[k] += at[k]; // x, y, z: where the part is placed
+        PetscFunctionReturn(0);
+      }, mat));
     }
-    PetscCall(AssemblyAddShell(a, id, std::move(mesh), mat));
   }
   std::map<std::string, BoltnetJointParams> types;
   for (size_t r = 0; r < joints.rows.size(); ++r) {

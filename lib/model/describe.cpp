@@ -137,7 +137,8 @@ PetscErrorCode AddBC(BoltnetAssembly a, const char *where, PetscInt patch, const
       const PetscInt   pos = a->model.Find(patch);
       const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;
       PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on set '%s': patch %" PetscInt_FMT " is not a shell patch", set, patch);
-      PetscCheck(sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
+      // A part read later is checked when it is read (patch/layout.cpp).
+      PetscCheck(sp->read || sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
     }
     a->model.bcs.push_back(BCDesc{patch, set ? set : "", dof, kind, value});
     PetscFunctionReturn(0);
@@ -165,6 +166,19 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh
   a->model.parts.push_back(PartDesc{id, PatchKind::Shell, mesh.x[0]});
   ShellPart &sp = a->model.shells[pos];
   sp.mesh       = std::move(mesh);
+  sp.material   = material;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyAddShellRead(BoltnetAssembly a, PetscInt id, std::int64_t size, std::function<PetscErrorCode(ShellMesh *)> read, const shell::ShellMaterial &material)
+{
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a, "AssemblyAddShellRead"));
+  const PetscInt pos = (PetscInt)a->model.parts.size();
+  a->model.parts.push_back(PartDesc{id, PatchKind::Shell, {0.0, 0.0, 0.0}});
+  ShellPart &sp = a->model.shells[pos];
+  sp.read       = std::move(read);
+  sp.size       = size;
   sp.material   = material;
   PetscFunctionReturn(0);
 }
@@ -262,6 +276,7 @@ PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly a, PetscInt patch, cons
     const PetscInt pos = a->model.Find(patch);
     ShellPart     *sp  = a->model.shells.count(pos) ? &a->model.shells[pos] : nullptr;
     PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
+    PetscCheck(!sp->read, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is read from its scene when the model is laid out; give the set in its mesh", name, patch);
     std::vector<int> add; // checked in full before the set changes: a refused call changes nothing
     add.reserve((size_t)n);
     for (PetscInt i = 0; i < n; ++i) {

@@ -10,6 +10,8 @@
 #include "shell/shell.hpp"
 
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -22,13 +24,19 @@ enum class PatchKind : PetscInt { Rigid = 0, Shell = 1 };
 struct PartDesc {
   PetscInt              id;   // user id
   PatchKind             kind;
-  std::array<double, 3> x;    // rigid: the node; shell: the first mesh node
+  std::array<double, 3> x;    // rigid: the node; shell: the first mesh node (zero for a part read later)
 };
 
 struct ShellPart {
   ShellMesh            mesh; // node sets included
   shell::ShellMaterial material;
   double               drill = shell::kDefaultDrill;
+  // A part that only the rank laying it out reads (the scene's plates and Gmsh parts: patch/layout.hpp):
+  // until then `mesh` is empty, `read` makes it (on PETSC_COMM_SELF, its errors naming the input) and
+  // `size` stands for its size in the assignment of parts to ranks (a plate's nodes, a Gmsh file's
+  // bytes / 100). Empty `read`: the mesh was given whole (the C API, a Nastran deck).
+  std::function<PetscErrorCode(ShellMesh *)> read;
+  std::int64_t                               size = 0;
 };
 
 struct JointDesc {

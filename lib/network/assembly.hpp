@@ -219,6 +219,9 @@ namespace boltnet {
 
 // A shell part from a mesh (node sets included) and a section (model/describe.cpp).
 PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh, const shell::ShellMaterial &material);
+// A shell part whose mesh only the rank that lays it out reads, by read() (ShellPart::read): the
+// scene's plates and Gmsh parts. `size` weighs it in the assignment of parts to ranks.
+PetscErrorCode AssemblyAddShellRead(BoltnetAssembly a, PetscInt id, std::int64_t size, std::function<PetscErrorCode(ShellMesh *)> read, const shell::ShellMaterial &material);
 // A linear spring joint with a full stiffness K (6 x 6, row major, in the joint frame n, t1,
 // t2 = n x t1: Params::full) acting at x (model/describe.cpp). With at_a and at_b (both or
 // neither), side a attaches at the point at_a (node coupling: the part's node nearest it; a rigid

@@ -13,23 +13,6 @@
 namespace boltnet {
 namespace {
 
-// The automatic patch size (-patch_max_nodes -1). A part is cut only to share it between ranks:
-// with every patch kept whole (-patch_condense false), about eight patches per rank, none under 32
-// nodes; otherwise about four per rank, none under 64 nodes (the automatic choice then decides which
-// pieces are condensed); no cut on one rank. Cutting a condensed part for its own sake does not pay:
-// the sparse factorisation of a whole plate costs about what its pieces cost, while every cut puts
-// a band of seam nodes on the interface, where each patch's S is dense over all its ports
-// (docs/solver.md, "Patch size": whole plates 11 times faster than 3,000-node pieces).
-long AutomaticPatchSize(BoltnetAssembly a)
-{
-  PetscInt total = 0;
-  for (const auto &kv : a->model.shells) total += (PetscInt)kv.second.mesh.x.size();
-  if (a->size == 1) return 0;
-  const bool condense = a->opt.condense != Condense::None;
-  const long per_rank = condense ? 4 : 8, smallest = condense ? 64 : 32;
-  return std::max<long>(smallest, (total + per_rank * a->size - 1) / (per_rank * a->size));
-}
-
 // Rank 0 lays the whole network out (the graph and its plain components only: no mesh), then
 // DMNetworkDistribute spreads it with the partition of SetPatchPartition.
 PetscErrorCode CreateNetwork(BoltnetAssembly a)
@@ -68,10 +51,7 @@ PetscErrorCode CreateNetwork(BoltnetAssembly a)
   if (a->size > 1 && a->opt.balance) {
     std::vector<PetscInt> weights; // every dof of the patch: the work of building (condensing) it
     if (a->rank == 0)
-      for (size_t i = 0; i < L.patches.size(); ++i) {
-        auto sh = L.shells.find((PetscInt)i);
-        weights.push_back(6 * (sh == L.shells.end() ? 1 : sh->second.nnodes()));
-      }
+      for (PetscInt n : L.nodes) weights.push_back(6 * n);
     PetscCall(SetPatchPartition(dm, weights, a->rank == 0 ? edgelist : std::vector<PetscInt>{}));
   }
   PetscCall(DMNetworkDistribute(&a->net.dm, 0));
@@ -241,27 +221,22 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a)
   lo.coupling  = a->opt.coupling_type;
   lo.radius    = a->opt.coupling_radius;
   lo.reach     = a->opt.coupling_reach;
-  lo.max_nodes = a->opt.patch_max_nodes < 0 ? AutomaticPatchSize(a) : a->opt.patch_max_nodes;
+  lo.max_nodes = a->opt.patch_max_nodes < 0 ? -1 : a->opt.patch_max_nodes;
   lo.condense  = a->opt.condense;
   lo.condense_ratio = a->opt.condense_ratio;
   lo.directors = a->opt.shell_directors;
-  a->net.ndof_model = 0;
-  for (const PartDesc &p : a->model.parts) {
-    auto sh = a->model.shells.find(&p - a->model.parts.data());
-    a->net.ndof_model += 6 * (sh == a->model.shells.end() ? 1 : (PetscInt)sh->second.mesh.x.size());
-  }
+  PetscInt nrigid = 0;
+  for (const PartDesc &p : a->model.parts) nrigid += p.kind == PatchKind::Rigid;
   PetscCall(LayoutCreate(a->comm, a->model, lo, &a->layout));
-  a->net.ncondensed = 0;
-  for (const auto &kv : a->layout.shells) {
-    a->net.ndof_model += 6 * (PetscInt)kv.second.joint_nodes.size();
-    a->net.ncondensed += kv.second.condensed;
-  }
+  a->net.ndof_model = 6 * (nrigid + a->layout.mesh_nodes + a->layout.njoint_nodes);
+  a->net.ncondensed = a->layout.ncondensed;
   PetscCall(PetscLogEventEnd(Events().layout, 0, 0, 0, 0));
   PetscCall(MarkMemory(a, "layout"));
 
   PetscCall(PetscLogEventBegin(Events().network, 0, 0, 0, 0));
   PetscCall(CreateNetwork(a));
   PetscCall(LocalViews(a));
+  PetscCall(AssemblyFetchLayout(a));
   PetscCall(PetscLogEventEnd(Events().network, 0, 0, 0, 0));
   PetscCall(PetscLogStagePop());
   PetscCall(MarkMemory(a, "network"));

@@ -2,6 +2,7 @@
 #include "patch/layout.hpp"
 #include "core/guard.hpp"
 #include "core/hash.hpp"
+#include "io/limits.hpp"
 #include "mesh/cut.hpp"
 #include "mesh/search.hpp"
 
@@ -14,7 +15,8 @@
 namespace boltnet {
 namespace {
 
-// The model's ids, references and supports (collective: every rank holds the same model).
+// The model's ids, references and supports (collective: every rank holds the same parts, joints and
+// conditions; the meshes are read later, each by one rank).
 PetscErrorCode CheckModel(MPI_Comm comm, const Model &m)
 {
   PetscFunctionBeginUser;
@@ -281,74 +283,239 @@ void Carry(Layout *L, const LayoutOptions &o)
         if (el.side[k] >= 0) el.node[k] = L->shells[el.side[k] ? sm.vb : sm.va].carried_index.at(el.node[k]);
 }
 
-// Layout::fingerprint: the patches with the nodes they carry, the joints with their patches.
-std::string Fingerprint(const Layout &L)
+// The automatic patch size (LayoutOptions::max_nodes -1). A part is cut only to share it between
+// ranks: with every patch kept whole, about eight patches per rank, none under 32 nodes; otherwise
+// about four per rank, none under 64 nodes (the automatic choice then decides which pieces are
+// condensed); no cut on one rank. Cutting a condensed part for its own sake does not pay: the
+// sparse factorisation of a whole plate costs about what its pieces cost, while every cut puts a
+// band of seam nodes on the interface, where each patch's S is dense over all its ports
+// (docs/solver.md, "Patch size": whole plates 11 times faster than 3,000-node pieces).
+long AutomaticPatchSize(std::int64_t total, PetscMPIInt size, bool condense)
 {
+  if (size == 1) return 0;
+  const long per_rank = condense ? 4 : 8, smallest = condense ? 64 : 32;
+  return std::max<long>(smallest, (long)((total + per_rank * size - 1) / (per_rank * size)));
+}
+
+// Which rank lays out each shell part (-1: a rigid part, which every rank lays out): the largest
+// first, each to the rank with the fewest nodes so far (longest processing time first), the lowest
+// rank among equals, so that every rank computes the same assignment.
+std::vector<PetscMPIInt> AssignParts(const Model &m, PetscMPIInt size)
+{
+  std::vector<PetscMPIInt> holder(m.parts.size(), -1);
+  std::vector<std::pair<std::size_t, PetscInt>> bysize;
+  for (const auto &[pos, sp] : m.shells) bysize.push_back({sp.read ? (std::size_t)sp.size : sp.mesh.x.size(), pos});
+  std::stable_sort(bysize.begin(), bysize.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
+  std::vector<std::size_t> load(size, 0);
+  for (const auto &[n, pos] : bysize) {
+    const PetscMPIInt r = (PetscMPIInt)(std::min_element(load.begin(), load.end()) - load.begin());
+    holder[pos]         = r;
+    load[r] += n;
+  }
+  return holder;
+}
+
+// What the holders of the parts found, given to every rank: each patch's record (the nodes its
+// vertex carries, all its nodes, whether condensed), each seam's ends, each joint's attachment on
+// shell parts; a stub (part, section, condensed) for every shell patch held elsewhere; the
+// fingerprint. Each value has one writer (the holder of its part), so sums gather them.
+PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &stubs, Layout *L)
+{
+  PetscFunctionBeginUser;
+  const PetscInt np = (PetscInt)L->patches.size(), ns = (PetscInt)L->seams.size(), nj = (PetscInt)L->joints.size();
+  constexpr int  kP = 6; // id, kind, nodes carried, all nodes, condensed, joint nodes
+  std::vector<PetscInt>      pi(kP * np, 0), si(3 * ns, 0), ji(6 * nj, 0);
+  std::vector<PetscReal>     px(3 * np, 0), jx(6 * nj, 0);
+  std::vector<std::uint64_t> digest(np, 0);
+  for (const auto &[pos, sp] : L->shells) {
+    PetscInt *q = &pi[kP * pos];
+    q[0] = sp.id, q[1] = static_cast<PetscInt>(PatchKind::Shell), q[2] = (PetscInt)sp.carried.size();
+    q[3] = sp.nnodes(), q[4] = sp.condensed, q[5] = (PetscInt)sp.joint_nodes.size();
+    for (int k = 0; k < 3; ++k) px[3 * pos + k] = sp.mesh.x[0][k];
+    Hasher h;
+    h.Add(sp.part_node);
+    h.Add(sp.carried);
+    digest[pos] = h.h;
+  }
+  for (PetscInt s = 0; s < ns; ++s) {
+    const Seam &sm = L->seams[s];
+    if (sm.part < 0) continue; // held elsewhere
+    si[3 * s] = sm.part, si[3 * s + 1] = sm.va, si[3 * s + 2] = sm.vb;
+  }
+  for (PetscInt j = 0; j < nj; ++j)
+    for (int side = 0; side < 2; ++side) {
+      const JointComp &c = L->joints[j];
+      const PetscInt   v = side ? c.vb : c.va;
+      if (v < 0 || !L->shells.count(v)) continue; // held elsewhere, or a rigid part's (known to all)
+      PetscInt *q = &ji[6 * j + 3 * side];
+      q[0] = v + 1, q[1] = side ? c.pnode_b : c.pnode_a, q[2] = side ? c.node_b : c.node_a;
+      for (int k = 0; k < 3; ++k) jx[6 * j + 3 * side + k] = side ? c.db[k] : c.da[k];
+    }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, pi.data(), (PetscMPIInt)pi.size(), MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, px.data(), (PetscMPIInt)px.size(), MPIU_REAL, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, digest.data(), (PetscMPIInt)digest.size(), MPI_UINT64_T, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, si.data(), (PetscMPIInt)si.size(), MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, ji.data(), (PetscMPIInt)ji.size(), MPIU_INT, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, jx.data(), (PetscMPIInt)jx.size(), MPIU_REAL, MPI_SUM, comm));
+
+  L->nodes.assign(np, 1);
+  L->ncondensed = L->njoint_nodes = 0;
+  for (PetscInt pos = 0; pos < np; ++pos) {
+    if (L->holder[pos] < 0) continue; // a rigid patch: laid out everywhere
+    const PetscInt *q = &pi[kP * pos];
+    L->patches[pos]   = PatchComp{q[0], pos, q[1], q[2], {px[3 * pos], px[3 * pos + 1], px[3 * pos + 2]}};
+    L->nodes[pos]     = q[3];
+    L->ncondensed += q[4];
+    L->njoint_nodes += q[5];
+    if (L->shells.count(pos)) continue;
+    ShellPatch stub  = stubs.at(L->part_of[pos]);
+    stub.condensed   = q[4] != 0;
+    L->shells[pos]   = std::move(stub);
+  }
+  for (PetscInt s = 0; s < ns; ++s) {
+    Seam &sm = L->seams[s];
+    if (sm.part >= 0) continue;
+    sm.part = si[3 * s], sm.va = si[3 * s + 1], sm.vb = si[3 * s + 2];
+    const ShellPatch &stub = stubs.at(L->part_of[sm.va]);
+    sm.material = stub.material, sm.drill = stub.drill;
+  }
+  for (PetscInt j = 0; j < nj; ++j)
+    for (int side = 0; side < 2; ++side) {
+      const PetscInt *q = &ji[6 * j + 3 * side];
+      if (q[0] == 0) continue;
+      JointComp &c = L->joints[j];
+      (side ? c.vb : c.va)           = q[0] - 1;
+      (side ? c.pnode_b : c.pnode_a) = q[1];
+      (side ? c.node_b : c.node_a)   = q[2];
+      for (int k = 0; k < 3; ++k) (side ? c.db : c.da)[k] = jx[6 * j + 3 * side + k];
+    }
+  for (const JointComp &c : L->joints) PetscCheck(c.va >= 0 && c.vb >= 0, comm, PETSC_ERR_PLIB, "Joint %" PetscInt_FMT " was not attached on every side", c.id);
+
+  // The fingerprint: the patches in order with the nodes they carry, the joints with their patches.
   Hasher h;
-  h.Add((std::uint64_t)L.patches.size());
-  for (size_t p = 0; p < L.patches.size(); ++p) {
-    h.Add(L.patches[p].id);
-    h.Add(L.patches[p].kind);
-    h.Add(L.patches[p].nnodes);
-    const auto sh = L.shells.find((PetscInt)p);
-    if (sh == L.shells.end()) continue;
-    h.Add(sh->second.part_node);
-    h.Add(sh->second.carried);
+  h.Add((std::uint64_t)np);
+  for (PetscInt p = 0; p < np; ++p) {
+    h.Add(L->patches[p].id);
+    h.Add(L->patches[p].kind);
+    h.Add(L->patches[p].nnodes);
+    h.Add(digest[p]);
   }
-  h.Add((std::uint64_t)L.joints.size());
-  for (const JointComp &j : L.joints) {
-    h.Add(j.id);
-    h.Add(j.va);
-    h.Add(j.vb);
+  h.Add((std::uint64_t)nj);
+  for (const JointComp &c : L->joints) {
+    h.Add(c.id);
+    h.Add(c.va);
+    h.Add(c.vb);
   }
-  return h.Hex();
+  L->fingerprint = h.Hex();
+  PetscFunctionReturn(0);
 }
 
 } // namespace
 
 PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Layout *L)
 {
+  PetscMPIInt rank, size;
   PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(CheckModel(comm, m));
-  // The shell parts as patches, before any cut.
-  std::map<PetscInt, ShellPatch> parts;
-  for (auto &[pos, sp] : m.shells) {
-    ShellPatch p;
-    p.id       = m.parts[pos].id;
-    p.mesh     = std::move(sp.mesh);
-    if (o.directors) p.mesh.directors = NodalDirectors(p.mesh); // empty on a flat part
-    p.material = sp.material;
-    p.drill    = sp.drill;
-    parts[pos] = std::move(p);
-  }
-  m.shells.clear();
-  std::vector<PetscInt> jnode;
-  PetscCall(AttachJoints(comm, m, o, parts, jnode));
+  const PetscInt                 npart  = (PetscInt)m.parts.size();
+  const std::vector<PetscMPIInt> holder = AssignParts(m, size);
 
-  // Cut the parts; every part becomes one or more patches.
-  *L        = Layout{};
-  L->nparts = (PetscInt)m.parts.size();
-  std::vector<std::vector<std::pair<PetscInt, int>>> nodemap(m.parts.size());
-  for (size_t i = 0; i < m.parts.size(); ++i) {
-    const PetscInt first = (PetscInt)L->patches.size();
-    auto           sh    = parts.find((PetscInt)i);
-    if (sh == parts.end()) {
-      L->patches.push_back(PatchComp{m.parts[i].id, first, static_cast<PetscInt>(PatchKind::Rigid), 1, {m.parts[i].x[0], m.parts[i].x[1], m.parts[i].x[2]}});
-      L->part_of.push_back((PetscInt)i);
-      nodemap[i] = {{first, 0}};
-      continue;
+  // The shell parts this rank lays out, read (ShellPart::read) and checked, as patches before any
+  // cut; of the others, what a stub needs.
+  std::map<PetscInt, ShellPatch> parts, stubs;
+  std::vector<std::int64_t>      meshnodes(npart, 0);
+  PetscCall(Collective(comm, "reading the parts", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    for (auto &[pos, sp] : m.shells) {
+      ShellPatch p;
+      p.id       = m.parts[pos].id;
+      p.material = sp.material;
+      p.drill    = sp.drill;
+      if (holder[pos] != rank) {
+        stubs[pos] = std::move(p);
+        continue;
+      }
+      if (sp.read) PetscCall(sp.read(&sp.mesh));
+      PetscCheck(!sp.mesh.elems.empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one element", p.id);
+      for (const BCDesc &bc : m.bcs) PetscCheck(bc.patch != p.id || bc.set.empty() || sp.mesh.node_sets.count(bc.set), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", p.id, bc.set.c_str());
+      meshnodes[pos] = (std::int64_t)sp.mesh.x.size();
+      p.mesh         = std::move(sp.mesh);
+      parts[pos]     = std::move(p);
     }
-    PetscCall(Guard(comm, [&] {
-      CutShellPart(std::move(sh->second), first, o.max_nodes, L, nodemap[i]);
-      return PetscErrorCode(0);
-    }));
-    for (PetscInt s = first; L->shells.count(s); ++s) { // the patches the part was cut into
-      const ShellPatch &sp = L->shells.at(s);
-      PatchComp         q{m.parts[i].id, s, static_cast<PetscInt>(PatchKind::Shell), sp.nnodes(), {sp.mesh.x[0][0], sp.mesh.x[0][1], sp.mesh.x[0][2]}};
-      L->patches.push_back(q);
-      L->part_of.push_back((PetscInt)i);
+    PetscFunctionReturn(0);
+  }));
+  m.shells.clear();
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, meshnodes.data(), (PetscMPIInt)npart, MPI_INT64_T, MPI_SUM, comm));
+  std::int64_t mesh_nodes = 0;
+  for (std::int64_t n : meshnodes) mesh_nodes += n;
+  PetscCheck(mesh_nodes <= limits::kMaxSceneNodes, comm, PETSC_ERR_USER_INPUT, "The shell parts have %lld nodes, more than the limit of %lld (docs/scenes.md, \"Limits\")", (long long)mesh_nodes, (long long)limits::kMaxSceneNodes);
+  {
+    std::int64_t mine = 0;
+    for (const auto &[pos, p] : parts) mine += meshnodes[pos];
+    PetscCall(PetscInfo(nullptr, "Read and laid out %zu of %zu shell parts (%lld of %lld mesh nodes) on this rank\n", parts.size(), parts.size() + stubs.size(), (long long)mine, (long long)mesh_nodes));
+  }
+  const long max_nodes = o.max_nodes >= 0 ? o.max_nodes : AutomaticPatchSize(mesh_nodes, size, o.condense != Condense::None);
+
+  // Attach the joints and cut the parts, each part into a layout of its own with patch positions
+  // from 0. Only the holder of a part knows it: errors are raised on every rank (Collective).
+  std::vector<PetscInt>                               jnode;
+  std::map<PetscInt, Layout>                          cuts;
+  std::vector<std::vector<std::pair<PetscInt, int>>> nodemap(npart);
+  std::vector<PetscInt>                               count(2 * npart, 0); // patches, seams of each part
+  PetscCall(Collective(comm, "laying out the parts", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    for (auto &[pos, p] : parts)
+      if (o.directors) p.mesh.directors = NodalDirectors(p.mesh); // empty on a flat part
+    PetscCall(AttachJoints(comm, m, o, parts, jnode));
+    for (auto &[pos, p] : parts) {
+      Layout &one = cuts[pos];
+      CutShellPart(std::move(p), 0, max_nodes, &one, nodemap[pos]);
+      count[2 * pos]     = (PetscInt)one.shells.size();
+      count[2 * pos + 1] = (PetscInt)one.seams.size();
+    }
+    PetscFunctionReturn(0);
+  }));
+  parts.clear();
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, count.data(), (PetscMPIInt)count.size(), MPIU_INT, MPI_SUM, comm));
+
+  // Every part's first patch and seam, the same on every rank.
+  *L            = Layout{};
+  L->nparts     = npart;
+  L->mesh_nodes = (PetscInt)mesh_nodes;
+  std::vector<PetscInt> first(npart), sfirst(npart);
+  PetscInt              npatch = 0, nseam = 0;
+  for (PetscInt i = 0; i < npart; ++i) {
+    const bool shell = m.parts[i].kind == PatchKind::Shell;
+    first[i]         = npatch;
+    sfirst[i]        = nseam;
+    npatch += shell ? count[2 * i] : 1;
+    nseam += shell ? count[2 * i + 1] : 0;
+    for (PetscInt s = first[i]; s < npatch; ++s) {
+      L->part_of.push_back(i);
+      L->holder.push_back(shell ? holder[i] : -1);
     }
   }
+  L->patches.assign(npatch, PatchComp{});
+  L->seams.resize(nseam);
+  for (PetscInt i = 0; i < npart; ++i) {
+    if (m.parts[i].kind == PatchKind::Shell) continue;
+    L->patches[first[i]] = PatchComp{m.parts[i].id, first[i], static_cast<PetscInt>(PatchKind::Rigid), 1, {m.parts[i].x[0], m.parts[i].x[1], m.parts[i].x[2]}};
+    nodemap[i]           = {{first[i], 0}};
+  }
+  for (auto &[pos, one] : cuts) { // this rank's parts, placed
+    for (auto &[k, sp] : one.shells) L->shells[first[pos] + k] = std::move(sp);
+    for (size_t s = 0; s < one.seams.size(); ++s) {
+      Seam &sm = one.seams[s];
+      sm.va += first[pos];
+      sm.vb += first[pos];
+      L->seams[sfirst[pos] + s] = std::move(sm);
+    }
+    for (auto &kv : one.cut_parts) L->cut_parts[kv.first] = std::move(kv.second);
+    for (auto &nm : nodemap[pos]) nm.first += first[pos];
+  }
+  cuts.clear();
   for (size_t ji = 0; ji < m.joints.size(); ++ji) {
     const JointDesc &d = m.joints[ji];
     JointComp        j{};
@@ -358,25 +525,28 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     j.patch_b = d.part_b;
     for (int k = 0; k < 3; ++k) j.x[k] = d.x[k];
     for (int k = 0; k < 9; ++k) j.R[k] = d.R[k];
-    j.params                    = d.params;
-    std::tie(j.va, j.pnode_a)   = nodemap[m.Find(d.part_a)][jnode[2 * ji]];
-    std::tie(j.vb, j.pnode_b)   = nodemap[m.Find(d.part_b)][jnode[2 * ji + 1]];
+    j.params = d.params;
+    j.va = j.vb = -1; // a side on a part another rank holds: filled in below
     for (int side = 0; side < 2; ++side) {
-      const PartDesc &part = m.parts[m.Find(side ? d.part_b : d.part_a)];
+      const PetscInt  pos  = m.Find(side ? d.part_b : d.part_a);
+      const PartDesc &part = m.parts[pos];
       PetscReal      *off  = side ? j.db : j.da;
       for (int k = 0; k < 3; ++k) off[k] = (part.kind == PatchKind::Rigid && d.positioned) ? d.x[k] - part.x[k] : 0.0;
+      if (nodemap[pos].empty()) continue;
+      auto &[v, pn] = nodemap[pos][jnode[2 * ji + side]];
+      (side ? j.vb : j.va)           = v;
+      (side ? j.pnode_b : j.pnode_a) = pn;
       // A levered joint on a shell part with node coupling: the node carries x by a rigid lever,
       // as a rigid patch's node does (with a footprint the joint node is at x already).
       if (part.kind == PatchKind::Shell && d.lever && o.coupling == CouplingType::Node) {
-        const ShellPatch &sp = L->shells.at(side ? j.vb : j.va);
-        const PetscInt    pn = side ? j.pnode_b : j.pnode_a;
+        const ShellPatch &sp = L->shells.at(v);
         for (int k = 0; k < 3; ++k) off[k] = d.x[k] - sp.mesh.x[pn][k];
       }
     }
     L->joints.push_back(j);
   }
   Carry(L, o);
-  L->fingerprint = Fingerprint(*L);
+  PetscCall(ShareLayout(comm, stubs, L));
   PetscFunctionReturn(0);
 }
 

@@ -60,29 +60,39 @@ struct LayoutOptions {
   CouplingType coupling  = CouplingType::Exact;
   double       radius    = 4.0; // footprint radius (mm)
   double       reach     = 0;   // footprint reach along the fastener axis (mm); 0: 4 radius
-  long         max_nodes = 0;   // largest patch in nodes (0: no cut)
+  long         max_nodes = 0;   // largest patch in nodes (0: no cut; -1: automatic, by the ranks)
   Condense     condense  = Condense::None; // which vertices carry their ports only
   double       condense_ratio = 4;       // Condense::Auto: ports per sqrt(patch dof)
   bool         directors = true;  // curved parts: the elements share the mesh's nodal directors
 };
 
+// Each shell part is laid out by one rank, its holder: its joints attached, its cut, its ports. Every
+// rank knows every patch's record, every seam's ends and every joint's component; the whole patches
+// and seams (meshes, elements, footprints) are on their part's holder only, and `shells` holds a
+// stub (part id, section, condensed; no mesh) for each of the others, until the network sends each
+// rank the patches and seams it needs (network/build.cpp).
 struct Layout {
   std::vector<PatchComp>         patches;
   std::vector<PetscInt>          part_of;   // position in the model's parts of each patch
+  std::vector<PetscMPIInt>       holder;    // the rank that laid out each patch's part (-1: rigid)
+  std::vector<PetscInt>          nodes;     // every node of each patch (mesh and joint nodes; 1 if rigid)
   std::map<PetscInt, ShellPatch> shells;    // the shell patches, by position in patches
-  std::vector<Seam>              seams;
+  std::vector<Seam>              seams;     // every seam's ends and section; its elements on its holder
   std::vector<JointComp>         joints;    // in the model's order
   std::map<PetscInt, ShellMesh>  cut_parts; // the whole meshes of the parts that were cut, by user id
   PetscInt                       nparts = 0;
+  PetscInt                       mesh_nodes = 0;   // mesh nodes over every shell part
+  PetscInt                       ncondensed = 0;   // shell patches condensed onto their ports
+  PetscInt                       njoint_nodes = 0; // joint nodes over every shell patch
   // A hash (hex) of the whole layout: the patches in order with the nodes they carry, the joints'
   // patches. Two runs whose layouts hash alike number their solution vectors alike, so a checkpoint
-  // of one restarts the other (io/checkpoint.cpp). Computed while every rank still holds the whole
-  // layout: once the network is built, each keeps only what it owns (network/build.cpp).
+  // of one restarts the other (io/checkpoint.cpp). It does not depend on the number of ranks.
   std::string                    fingerprint;
 };
 
-// Check the model and lay it out. The shell parts' meshes move from the model into the layout.
-// Errors name the joint, part, node or boundary condition at fault.
+// Check the model and lay it out (collective). The shell parts' meshes move from the model: a
+// part's into the layout on its holder, the others' are dropped. Errors name the joint, part, node
+// or boundary condition at fault, on every rank.
 PetscErrorCode LayoutCreate(MPI_Comm comm, Model &model, const LayoutOptions &o, Layout *L);
 
 // The edge list of the network: the joints (their patches' positions), then the seams.

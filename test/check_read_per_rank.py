@@ -1,0 +1,109 @@
+#!/usr/bin/python3
+"""Checks that each shell part is read and laid out by one rank only (lib/patch/layout.cpp).
+
+  check_read_per_rank.py SCENE.yaml RANKS -- COMMAND...
+
+Runs COMMAND (an mpirun of the driver with -info) and reads each rank's line
+
+  [r] LayoutCreate(): Read and laid out K of P shell parts (n of N mesh nodes) on this rank
+
+The reference is the scene's own patches table, read here: P must be its number of shell rows (plate
+or gmsh), N the nodes of those parts (a plate's (nx + 1) (ny + 1); a Gmsh part's nodes, counted in
+its file by its physical surface's elements). Over the ranks the K must add up to P and the n to N
+(every part read once), and with several ranks and parts no rank may read them all.
+"""
+import csv
+import os
+import re
+import subprocess
+import sys
+
+
+def gmsh_part_nodes(path, part):
+    """The nodes of the elements of physical surface `part` in an MSH 4.1 ASCII file."""
+    lines = open(path).read().split("\n")
+    i, names, surf_phys, nodes = 0, {}, {}, set()
+    while i < len(lines):
+        s = lines[i].strip()
+        if s == "$PhysicalNames":
+            n = int(lines[i + 1])
+            for k in range(n):
+                w = lines[i + 2 + k].split(maxsplit=2)
+                if int(w[0]) == 2:
+                    names[w[2].strip('"')] = int(w[1])
+            i += n + 2
+        elif s == "$Entities":
+            npts, ncur, nsrf, _ = map(int, lines[i + 1].split())
+            for k in range(nsrf):
+                w = lines[i + 2 + npts + ncur + k].split()
+                tag, nphys = int(w[0]), int(w[7])
+                surf_phys[tag] = [int(x) for x in w[8:8 + nphys]]
+            i += 2
+        elif s == "$Elements":
+            nblocks = int(lines[i + 1].split()[0])
+            j = i + 2
+            for _ in range(nblocks):
+                dim, tag, typ, n = map(int, lines[j].split())
+                keep = dim == 2 and names.get(part) in surf_phys.get(tag, [])
+                for k in range(n):
+                    if keep:
+                        nodes.update(int(x) for x in lines[j + 1 + k].split()[1:])
+                j += n + 1
+            i = j
+        else:
+            i += 1
+    return len(nodes)
+
+
+def scene_parts(scene):
+    """(shell parts, their nodes) from the scene's patches table."""
+    text = open(scene).read()
+    m = re.search(r"^\s*patches:\s*(\S+)", text, re.M)
+    table = os.path.join(os.path.dirname(scene), m.group(1))
+    parts = nodes = 0
+    for row in csv.DictReader(line for line in open(table) if not line.startswith("#")):
+        kind = row["kind"].strip()
+        if kind == "plate":
+            nodes += (int(row["nx"]) + 1) * (int(row["ny"]) + 1)
+        elif kind == "gmsh":
+            nodes += gmsh_part_nodes(os.path.join(os.path.dirname(table), row["mesh"].strip()), row["part"].strip())
+        else:
+            continue
+        parts += 1
+    return parts, nodes
+
+
+def main():
+    scene, ranks = sys.argv[1], int(sys.argv[2])
+    cmd = sys.argv[sys.argv.index("--") + 1:]
+    out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if out.returncode != 0:
+        print(out.stdout[-3000:])
+        sys.exit(f"the run exited {out.returncode}")
+    pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read and laid out (\d+) of (\d+) shell parts \((\d+) of (\d+) mesh nodes\)")
+    seen = {}
+    for line in out.stdout.splitlines():
+        g = pat.match(line)
+        if g:
+            seen[int(g.group(1))] = tuple(int(x) for x in g.groups()[1:])
+    P, N = scene_parts(scene)
+    bad = []
+    if sorted(seen) != list(range(ranks)):
+        bad.append(f"lines from ranks {sorted(seen)}, expected 0..{ranks - 1}")
+    for r, (k, p, n, tot) in sorted(seen.items()):
+        print(f"rank {r}: {k} of {p} shell parts, {n} of {tot} mesh nodes")
+        if p != P or tot != N:
+            bad.append(f"rank {r} counts {p} parts of {tot} nodes; the scene has {P} parts of {N} nodes")
+        if ranks > 1 and P > 1 and k == P:
+            bad.append(f"rank {r} read every part")
+    if sum(v[0] for v in seen.values()) != P:
+        bad.append(f"the ranks read {sum(v[0] for v in seen.values())} parts in all, the scene has {P}")
+    if sum(v[2] for v in seen.values()) != N:
+        bad.append(f"the ranks read {sum(v[2] for v in seen.values())} nodes in all, the scene has {N}")
+    if bad:
+        sys.exit("FAIL: " + "; ".join(bad))
+    print(f"every one of the {P} shell parts ({N} nodes) read by one rank of {ranks}")
+
+
+if __name__ == "__main__":
+    main()
