@@ -1,8 +1,9 @@
 // The assembly: the opaque BoltnetAssembly of boltnet.h, in the order the data flows.
 //
-//   model    what the user described: parts, fasteners, boundary conditions (model/model.hpp)
-//   layout   the parts cut into patches, joints attached, the nodes each vertex carries
-//            (patch/layout.hpp)
+//   model    what the user described: parts, fasteners, boundary conditions (model/model.hpp);
+//            a scene's meshes not yet read
+//   layout   the parts, each read and laid out by one rank: cut into patches, joints attached,
+//            the nodes each vertex carries (patch/layout.hpp)
 //   net      the DMNetwork of patches (vertices), joints and seams (edges), distributed
 //   patches  the operators of the patches and seams this rank owns: kept whole, or condensed onto
 //            their ports (patch/condense.hpp)
@@ -60,8 +61,8 @@ struct AssemblyOptions {
   PetscReal    coupling_penalty = 1e3;
   // Curved shell parts: the elements around a node share the mesh's nodal director (docs/shell.md).
   PetscBool    shell_directors = PETSC_TRUE;
-  // Every rank keeps the whole layout after the set-up (the gathering fields writer needs it on
-  // rank 0); otherwise each keeps only the patches and seams its operators and joints use.
+  // Every rank receives and keeps the whole layout (the gathering fields writer needs it on rank
+  // 0); otherwise each keeps only the patches and seams its operators and joints use.
   PetscBool    keep_layout = PETSC_FALSE;
   PetscBool    setfromoptions_called = PETSC_FALSE;
 };
