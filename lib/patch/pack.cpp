@@ -1,11 +1,16 @@
 // Shell patches, seams and meshes as bytes (pack.hpp), field by field: the structs hold vectors and
-// maps, and their padding must not travel.
+// maps, and their padding must not travel. Each type's fields are listed once, in Fields(), and
+// walked by the writer and the reader alike, so the two cannot disagree on the order.
 #include "patch/pack.hpp"
 
 namespace boltnet {
 namespace {
 
-template <class V> void PutMap(PackWriter &w, const std::map<std::string, V> &m)
+// The writer's and the reader's one step: a value (or a vector or string of them) out or in.
+template <class T> void Field(PackWriter &w, const T &v) { w.Put(v); }
+template <class T> void Field(PackReader &r, T &v) { r.Get(v); }
+
+template <class V> void Field(PackWriter &w, const std::map<std::string, V> &m)
 {
   w.Put((std::uint64_t)m.size());
   for (const auto &[k, v] : m) {
@@ -14,7 +19,7 @@ template <class V> void PutMap(PackWriter &w, const std::map<std::string, V> &m)
   }
 }
 
-template <class V> void GetMap(PackReader &r, std::map<std::string, V> &m)
+template <class V> void Field(PackReader &r, std::map<std::string, V> &m)
 {
   std::uint64_t n;
   r.Get(n);
@@ -26,127 +31,91 @@ template <class V> void GetMap(PackReader &r, std::map<std::string, V> &m)
   }
 }
 
-void Put(PackWriter &w, const ElementGeometry &g)
+// A vector of structs: its length, then each element's fields (F: the element's Fields()).
+template <class T, class F> void Elements(PackWriter &w, const std::vector<T> &v, F &&fields)
 {
-  w.Put(g.n);
-  w.Put(g.X);
-  w.Put(g.V);
-  w.Put(g.directors);
+  w.Put((std::uint64_t)v.size());
+  for (const T &e : v) fields(w, e);
 }
 
-void Get(PackReader &r, ElementGeometry &g)
+template <class T, class F> void Elements(PackReader &r, std::vector<T> &v, F &&fields)
 {
-  r.Get(g.n);
-  r.Get(g.X);
-  r.Get(g.V);
-  r.Get(g.directors);
+  std::uint64_t n;
+  r.Get(n);
+  v.clear();
+  for (std::uint64_t i = 0; i < n; ++i) fields(r, v.emplace_back());
+}
+
+// The field lists. A is PackWriter (S const) or PackReader.
+template <class A, class S> void GeometryFields(A &a, S &g)
+{
+  Field(a, g.n);
+  Field(a, g.X);
+  Field(a, g.V);
+  Field(a, g.directors);
+}
+
+template <class A, class S> void MeshFields(A &a, S &m)
+{
+  Field(a, m.x);
+  Field(a, m.elems);
+  Field(a, m.node_sets);
+  Field(a, m.directors);
+}
+
+template <class A, class S> void PatchFields(A &a, S &p)
+{
+  Field(a, p.id);
+  MeshFields(a, p.mesh);
+  Field(a, p.material);
+  Field(a, p.drill);
+  Elements(a, p.shared, [](A &b, auto &s) {
+    GeometryFields(b, s.geom);
+    Field(b, s.node);
+    Field(b, s.elem);
+    Field(b, s.part_node);
+  });
+  Elements(a, p.joint_nodes, [](A &b, auto &jn) {
+    Field(b, jn.x);
+    Field(b, jn.axis);
+    Field(b, jn.footprint);
+  });
+  Field(a, p.part_set_size);
+  Field(a, p.part_node);
+  Field(a, p.part_elem);
+  Field(a, p.condensed);
+  Field(a, p.carried);
+}
+
+template <class A, class S> void SeamFields(A &a, S &s)
+{
+  Field(a, s.part);
+  Field(a, s.va);
+  Field(a, s.vb);
+  Field(a, s.material);
+  Field(a, s.drill);
+  Elements(a, s.elems, [](A &b, auto &e) {
+    GeometryFields(b, e.geom);
+    Field(b, e.side);
+    Field(b, e.node);
+  });
 }
 
 } // namespace
 
-void Pack(PackWriter &w, const ShellMesh &m)
-{
-  w.Put(m.x);
-  w.Put(m.elems);
-  PutMap(w, m.node_sets);
-  w.Put(m.directors);
-}
+void Pack(PackWriter &w, const ShellMesh &m) { MeshFields(w, m); }
+void Unpack(PackReader &r, ShellMesh &m) { MeshFields(r, m); }
 
-void Unpack(PackReader &r, ShellMesh &m)
-{
-  r.Get(m.x);
-  r.Get(m.elems);
-  GetMap(r, m.node_sets);
-  r.Get(m.directors);
-}
-
-void Pack(PackWriter &w, const ShellPatch &p)
-{
-  w.Put(p.id);
-  Pack(w, p.mesh);
-  w.Put(p.material);
-  w.Put(p.drill);
-  w.Put((std::uint64_t)p.shared.size());
-  for (const auto &s : p.shared) {
-    Put(w, s.geom);
-    w.Put(s.node);
-    w.Put(s.elem);
-    w.Put(s.part_node);
-  }
-  w.Put((std::uint64_t)p.joint_nodes.size());
-  for (const auto &jn : p.joint_nodes) {
-    w.Put(jn.x);
-    w.Put(jn.axis);
-    w.Put(jn.footprint);
-  }
-  PutMap(w, p.part_set_size);
-  w.Put(p.part_node);
-  w.Put(p.part_elem);
-  w.Put(p.condensed);
-  w.Put(p.carried);
-}
+void Pack(PackWriter &w, const ShellPatch &p) { PatchFields(w, p); }
 
 void Unpack(PackReader &r, ShellPatch &p)
 {
-  std::uint64_t n;
-  r.Get(p.id);
-  Unpack(r, p.mesh);
-  r.Get(p.material);
-  r.Get(p.drill);
-  r.Get(n);
-  p.shared.resize(n);
-  for (auto &s : p.shared) {
-    Get(r, s.geom);
-    r.Get(s.node);
-    r.Get(s.elem);
-    r.Get(s.part_node);
-  }
-  r.Get(n);
-  p.joint_nodes.resize(n);
-  for (auto &jn : p.joint_nodes) {
-    r.Get(jn.x);
-    r.Get(jn.axis);
-    r.Get(jn.footprint);
-  }
-  GetMap(r, p.part_set_size);
-  r.Get(p.part_node);
-  r.Get(p.part_elem);
-  r.Get(p.condensed);
-  r.Get(p.carried);
+  PatchFields(r, p);
   p.carried_index.clear();
   for (size_t i = 0; i < p.carried.size(); ++i) p.carried_index[p.carried[i]] = (int)i;
 }
 
-void Pack(PackWriter &w, const Seam &s)
-{
-  w.Put(s.part);
-  w.Put(s.va);
-  w.Put(s.vb);
-  w.Put(s.material);
-  w.Put(s.drill);
-  w.Put((std::uint64_t)s.elems.size());
-  for (const auto &e : s.elems) {
-    Put(w, e.geom);
-    w.Put(e.side);
-    w.Put(e.node);
-  }
-}
-
-void Unpack(PackReader &r, Seam &s)
-{
-  std::uint64_t n;
-  r.Get(s.part);
-  r.Get(s.va);
-  r.Get(s.vb);
-  r.Get(s.material);
-  r.Get(s.drill);
-  r.Get(n);
-  s.elems.resize(n);
-  for (auto &e : s.elems) {
-    Get(r, e.geom);
-    r.Get(e.side);
-    r.Get(e.node);
-  }
-}
+void Pack(PackWriter &w, const Seam &s) { SeamFields(w, s); }
+void Unpack(PackReader &r, Seam &s) { SeamFields(r, s); }
 
 } // namespace boltnet
