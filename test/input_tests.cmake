@@ -6,6 +6,7 @@
 # The pure parsers (tables, scene files, Gmsh files) against hand-made inputs.
 add_executable(test_input test_input.cpp ${PROJECT_SOURCE_DIR}/lib/io/table.cpp ${PROJECT_SOURCE_DIR}/lib/io/scene_yaml.cpp ${PROJECT_SOURCE_DIR}/lib/mesh/gmsh.cpp)
 target_include_directories(test_input PRIVATE ${PROJECT_SOURCE_DIR}/lib)
+target_compile_definitions(test_input PRIVATE BOLTNET_TEST_DATA="${CMAKE_CURRENT_SOURCE_DIR}/data")
 target_link_libraries(test_input PRIVATE GTest::gtest GTest::gtest_main yaml)
 gtest_discover_tests(test_input)
 

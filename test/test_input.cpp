@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -115,4 +116,23 @@ TEST(GmshText, CountsAreCheckedNotAllocated)
   EXPECT_EQ(Error([&] { ParseGmsh("m.msh", head + "$Nodes\n-1 1 1 1\n"); }), "Mesh file 'm.msh' line 5: the number of node blocks is negative");
   EXPECT_EQ(Error([&] { ParseGmsh("m.msh", head + "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 -2147483648 0\n"); }), "Mesh file 'm.msh' line 6: physical tag out of range");
   EXPECT_EQ(Error([&] { ParseGmsh("m.msh", head + "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 2 3\n"); }), "Mesh file 'm.msh' line 7: a quadrangle names the same node twice");
+}
+
+// The nodes a Gmsh file declares, read from its $Nodes header alone (what a part is weighed by before
+// one rank reads it): on the two-part test mesh, the nodes the full reader finds in its two parts
+// (they share none); -1 for a missing file and for a file without $Nodes; CRLF line ends read alike.
+TEST(GmshText, DeclaredNodeCount)
+{
+  const std::string mesh = std::string(BOLTNET_TEST_DATA) + "/two-parts.msh";
+  size_t            parsed = 0;
+  for (const auto &[name, part] : ReadGmsh(mesh)) parsed += part.x.size();
+  EXPECT_EQ(GmshNodeCount(mesh), (long long)parsed);
+  EXPECT_EQ(GmshNodeCount(std::string(BOLTNET_TEST_DATA) + "/no-such-mesh.msh"), -1);
+  const std::string dir = ::testing::TempDir();
+  auto              write = [&](const std::string &name, const std::string &text) {
+    std::ofstream(dir + name, std::ios::binary) << text;
+    return dir + name;
+  };
+  EXPECT_EQ(GmshNodeCount(write("no-nodes.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements\n0 0 0 0\n$EndElements\n")), -1);
+  EXPECT_EQ(GmshNodeCount(write("crlf.msh", "$MeshFormat\r\n4.1 0 8\r\n$EndMeshFormat\r\n$Nodes\r\n2 7 1 7\r\n")), 7);
 }

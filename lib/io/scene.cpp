@@ -436,7 +436,10 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       PetscCheck(!ec && std::ifstream(file).good(), comm, PETSC_ERR_USER_INPUT, "%s line %d: Cannot read the mesh file '%s'", patches.path.c_str(), patches.lines[r], file.c_str());
       const std::array<double, 3> at    = {x[0], x[1], x[2]};
       const std::string           where = patches.path + " line " + std::to_string(patches.lines[r]);
-      PetscCall(AssemblyAddShellRead(a, id, (std::int64_t)(bytes / 100), [at, file, part, where](ShellMesh *mesh) -> PetscErrorCode {
+      // Weighed by the nodes its file declares (all its parts'), or by its bytes if it declares none
+      // or is larger than a mesh file may be (its reader then refuses it: docs/scenes.md, "Limits").
+      const long long declared = (long long)bytes <= limits::kMaxInputBytes ? GmshNodeCount(file) : -1;
+      PetscCall(AssemblyAddShellRead(a, id, declared >= 0 ? (std::int64_t)declared : (std::int64_t)(bytes / 100), [at, file, part, where](ShellMesh *mesh) -> PetscErrorCode {
         std::map<std::string, ShellMesh> parts;
         std::string                      why;
         PetscFunctionBeginUser;

@@ -77,6 +77,21 @@ std::map<std::string, ShellMesh> ReadGmsh(const std::string &path)
   return ParseGmsh(path, ss.str());
 }
 
+long long GmshNodeCount(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string   line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line == "$Elements") break; // MSH 4.1 puts $Nodes first
+    if (line != "$Nodes" || !std::getline(in, line)) continue;
+    std::istringstream ss(line);
+    long long          blocks, n;
+    return (ss >> blocks >> n) && n >= 0 ? n : -1;
+  }
+  return -1;
+}
+
 std::map<std::string, ShellMesh> ParseGmsh(const std::string &path, const std::string &text)
 {
   Reader                                    r(path, text);

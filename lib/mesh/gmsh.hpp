@@ -14,6 +14,10 @@ namespace boltnet {
 // missing file, a file that is not an MSH 4.1 ASCII mesh, an element type other than 3-node
 // triangles and 4-node quadrangles in a part (or lines and points in a node set), naming the type.
 std::map<std::string, ShellMesh> ReadGmsh(const std::string &path);
+// The number of nodes the file declares (its $Nodes header), read without parsing the rest: what a
+// part read later (model/model.hpp, ShellPart::read) weighs before it is read. -1 where the file
+// cannot be read or declares none; the full read then says why.
+long long GmshNodeCount(const std::string &path);
 // The same from the file's text (path names it in messages): the pure parser, for tests and fuzzing.
 // Counts are checked before use and nothing is allocated from a count, only from lines read.
 std::map<std::string, ShellMesh> ParseGmsh(const std::string &path, const std::string &text);

@@ -33,8 +33,8 @@ struct ShellPart {
   double               drill = shell::kDefaultDrill;
   // A part that only the rank laying it out reads (the scene's plates and Gmsh parts: patch/layout.hpp):
   // until then `mesh` is empty, `read` makes it (on PETSC_COMM_SELF, its errors naming the input) and
-  // `size` stands for its size in the assignment of parts to ranks (a plate's nodes, a Gmsh file's
-  // bytes / 100). Empty `read`: the mesh was given whole (the C API, a Nastran deck).
+  // `size` stands for its size in the assignment of parts to ranks (a plate's nodes, the nodes its
+  // Gmsh file declares). Empty `read`: the mesh was given whole (the C API, a Nastran deck).
   std::function<PetscErrorCode(ShellMesh *)> read;
   std::int64_t                               size = 0;
 };
