@@ -111,6 +111,59 @@ add_test(NAME plate_grid_small_lagged_factors_less
           ${BOLTNET_OUT}/plate_grid_small_lagged_np2/summary.json)
 set_tests_properties(plate_grid_small_lagged_factors_less PROPERTIES FIXTURES_REQUIRED plate_grid_small_lagged_np2)
 
+# -interface_solve auto (the default) decides from MUMPS's analysis of the first Jacobian: lagged
+# where the factorisation costs at least -interface_lagged_flops_per_entry flops per entry of the
+# factors (docs/solver.md, "The interface solve"). The small scenes' factorisations cost far less
+# (13 to 300 flops per entry), so they stay direct: the chain's default run says so.
+add_test(NAME chain_auto_is_direct
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve']); sys.exit(0 if s['interface_solve'] == 'direct' and s['lagged_factorisations'] == 0 else 1)"
+          ${BOLTNET_OUT}/chain_np1/summary.json)
+set_tests_properties(chain_auto_is_direct PROPERTIES FIXTURES_REQUIRED chain_np1)
+# With the threshold at 1 flop per entry every analysis qualifies: the run says it went lagged,
+# factors once for the whole load path, and gives the direct solve's joints.csv (to 1e-8: GMRES
+# stops at 1e-10 of the residual) on 1 rank (the chain) and on 2 and 3 ranks (the small plate grid,
+# against its direct run on 2 ranks).
+boltnet_expect(chain_auto_lagged 1 --match "MUMPS's analysis estimates the 36-dof Jacobian's factorisation at [0-9]+ flops per entry of its factors \\(-interface_lagged_flops_per_entry 1\\.?\\): the interface solve is lagged"
+  --match "steps converged" -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/chain_auto_lagged
+  -interface_lagged_flops_per_entry 1)
+set_tests_properties(chain_auto_lagged_np1 PROPERTIES FIXTURES_SETUP chain_auto_lagged)
+add_test(NAME chain_auto_lagged_same_as_direct
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/chain_np1/joints.csv ${BOLTNET_OUT}/chain_auto_lagged/joints.csv 1e-8)
+set_tests_properties(chain_auto_lagged_same_as_direct PROPERTIES FIXTURES_REQUIRED "chain_np1;chain_auto_lagged")
+add_test(NAME chain_auto_lagged_factors_once
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['lagged_factorisations'], 'factorisations for', s['linear_solves'], 'linear solves'); sys.exit(0 if s['interface_solve'] == 'lagged' and s['lagged_factorisations'] == 1 and s['linear_solves'] > 1 else 1)"
+          ${BOLTNET_OUT}/chain_auto_lagged/summary.json)
+set_tests_properties(chain_auto_lagged_factors_once PROPERTIES FIXTURES_REQUIRED chain_auto_lagged)
+foreach(ranks 2 3)
+  boltnet_run(plate_grid_small_auto_lagged ${ranks} ${BOLTNET_OUT}/grid/small.yaml -interface_lagged_flops_per_entry 1)
+  set_tests_properties(run_plate_grid_small_auto_lagged_np${ranks} PROPERTIES FIXTURES_REQUIRED grid_scene)
+  add_test(NAME plate_grid_small_auto_lagged_np${ranks}_same_as_direct
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_small_np2/joints.csv ${BOLTNET_OUT}/plate_grid_small_auto_lagged_np${ranks}/joints.csv 1e-8)
+  set_tests_properties(plate_grid_small_auto_lagged_np${ranks}_same_as_direct PROPERTIES FIXTURES_REQUIRED "plate_grid_small_np2;plate_grid_small_auto_lagged_np${ranks}")
+endforeach()
+# Factors on disk are read back at every triangular solve, and a Krylov method the user chose is
+# the user's: with either, auto stays direct whatever the estimate. (Factors on disk: lap-rows in
+# the global system, whose in-core estimate, 55 MB, is above the 30 MB given, as in
+# test/memory_tests.cmake's factor_memory_estimate.)
+boltnet_expect(lap_rows_auto_on_disk_direct 1 --match "the factors go to disk" --match "steps converged" --reject "the interface solve is lagged"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/lap_rows_auto_on_disk
+  -output_fields false -patch_condense false -interface_lagged_flops_per_entry 1 -interface_memory_mb 30)
+set_tests_properties(lap_rows_auto_on_disk_direct_np1 PROPERTIES FIXTURES_SETUP lap_rows_auto_on_disk)
+boltnet_expect(chain_auto_user_ksp_direct 1 --match "steps converged" --reject "the interface solve is lagged"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/chain_auto_user_ksp
+  -interface_lagged_flops_per_entry 1 -ksp_type gmres)
+set_tests_properties(chain_auto_user_ksp_direct_np1 PROPERTIES FIXTURES_SETUP chain_auto_user_ksp)
+foreach(case lap_rows_auto_on_disk chain_auto_user_ksp)
+  add_test(NAME ${case}_is_direct
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk']); sys.exit(0 if s['interface_solve'] == 'direct' and s['lagged_factorisations'] == 0 and s['factors_on_disk'] == sys.argv[2].endswith('on_disk') else 1)"
+            ${BOLTNET_OUT}/${case}/summary.json ${case})
+  set_tests_properties(${case}_is_direct PROPERTIES FIXTURES_REQUIRED ${case})
+endforeach()
+boltnet_expect(interface_lagged_flops_bad 1 --fail --max-lines 1 --match "-interface_lagged_flops_per_entry 0\\.? must be > 0"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/lagged_flops_bad -interface_lagged_flops_per_entry 0)
+boltnet_expect(interface_solve_bad 1 --fail --match "auto" --match "direct" --match "lagged"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/interface_solve_bad -interface_solve sometimes)
+
 # -log_view says where the time goes: boltnet's stages (lib/core/log.hpp) are listed, and the
 # condensation, the interface solve and the output took time in theirs (a stage that no code pushes
 # shows 0.0000e+00), with the condensation's own events called, on 1, 2 and 3 ranks. Every patch condensed, so that the interior recovery runs

@@ -42,7 +42,6 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   PetscCall(MatDestroy(&(*a)->Jlast));
   PetscCall(AbsMultDestroy(&(*a)->roundoff));
   PetscCall(MatDestroy(&(*a)->Jbase));
-  PetscCall(MatDestroy(&(*a)->Pfac));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(VecDestroy(&(*a)->Xprev));
   PetscCall(DMDestroy(&(*a)->net.dm));

@@ -166,11 +166,15 @@ struct _p_BoltnetAssembly {
   Mat       Jbase     = nullptr;     // the linear part of J (patches, seams), copied in before the joints
   // The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
   // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian,
-  // Pfac, refactored when the Krylov solve takes more than refactor_its iterations or fails).
-  PetscBool lagged       = PETSC_FALSE;
-  PetscInt  refactor_its = 25;
-  Mat       Pfac         = nullptr; // created by AssemblySetUpSolver for the lagged solve only
-  PetscBool pfac_valid   = PETSC_FALSE; // Pfac holds a Jacobian of this analysis
+  // kept in the PC and refactored when the Krylov solve takes more than refactor_its iterations or
+  // fails). solve_auto: not chosen yet; MUMPS's first analysis of J decides (lagged where it
+  // estimates at least lagged_flops_per_entry flops per entry of the factors, in core).
+  PetscBool lagged                 = PETSC_FALSE;
+  PetscBool solve_auto             = PETSC_TRUE;
+  PetscBool lagged_ksp             = PETSC_FALSE; // the KSP is set up for the lagged solve
+  PetscReal lagged_flops_per_entry = 1000;
+  PetscInt  refactor_its           = 25;
+  PetscBool factors_valid          = PETSC_FALSE; // the PC's factors are of a Jacobian of this analysis
   // The direct solve's modified Newton (docs/solver.md, "Keeping the factorisation"): the Jacobian
   // of an earlier iterate of the same solve, and its factors, are kept while the residual falls by
   // at least this factor per iteration and no joint changes state (0: refactor at every iteration).
@@ -291,6 +295,8 @@ std::string    DescribeEquilibrium(const Equilibrium &eq);
 // factors on disk (ICNTL(22)) once they did not fit in memory; a no-op for other solvers. Call
 // after the solver is set up and after every PCReset.
 PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
+// The lagged interface solve's Krylov method (GMRES, right preconditioned) on the SNES's KSP.
+PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a);
 // After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->singular
 // names the mechanism (patches, dof, joints) from a null vector of the Jacobian.
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull);

@@ -23,7 +23,7 @@ PetscErrorCode AssemblyReset(BoltnetAssembly a)
   a->has_prev         = PETSC_FALSE; // no secant predictor from the last case's path
   a->factorisations = a->krylov_its = a->linear_solves = a->kept = 0;
   a->keep_it = -1;
-  a->pfac_valid = PETSC_FALSE;
+  a->factors_valid = PETSC_FALSE;
   JointSet &js  = a->joints;
   js.committed.assign(js.size(), History{}); // every joint back to its initial history
   js.accepted.clear();

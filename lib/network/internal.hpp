@@ -15,8 +15,8 @@ PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, siz
 PetscErrorCode AssemblyFetchLayout(BoltnetAssembly a);
 // The Jacobian, preallocated exactly (network/jacobian.cpp).
 PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a);
-// The lagged interface solve's choice: refactor P from J now, or keep its factorisation.
-PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P);
+// The lagged interface solve's choice: refactor J now, or keep the PC's factorisation.
+PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a);
 // The boundary rows of the owned patches (network/boundary.cpp).
 PetscErrorCode AssemblySetUpBoundary(BoltnetAssembly a);
 // The ghosted local copy of X (collective: every rank must call it, whatever it owns).

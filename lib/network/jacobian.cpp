@@ -217,12 +217,15 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
-// The lagged interface solve: keep the factorisation of P while the Krylov solves it preconditions
-// converge quickly; refactor (P <- J) when the last solve took more than -interface_refactor_its
-// iterations or failed, and before the first solve. Joints that change state change J by a few
-// rows: the preconditioned operator P^-1 J is then the identity plus a low-rank term, and Krylov
-// converges in about that rank's iterations (docs/solver.md, "The interface solve").
-PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P)
+// The lagged interface solve: keep the PC's factorisation of an earlier J while the Krylov solves
+// it preconditions converge quickly; refactor when the last solve took more than
+// -interface_refactor_its iterations or failed, and before the first solve. Joints that change
+// state change J by a few rows: the preconditioned operator is then the identity plus a low-rank
+// term, and Krylov converges in about that rank's iterations (docs/solver.md, "The interface
+// solve"). The choice goes through SNES's lag of the preconditioner, which SNESComputeJacobian
+// turns into KSPSetReusePreconditioner() after this function returns: -2 factors once, then -1
+// keeps that factorisation until the next -2.
+PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a)
 {
   KSP                ksp;
   KSPConvergedReason reason;
@@ -231,11 +234,11 @@ PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a, Mat J, Mat P)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   PetscCall(KSPGetConvergedReason(ksp, &reason));
   PetscCall(KSPGetIterationNumber(ksp, &its));
-  if (!a->pfac_valid || reason < 0 || its > a->refactor_its) {
-    PetscCall(MatCopy(J, P, SAME_NONZERO_PATTERN));
-    a->pfac_valid = PETSC_TRUE;
+  if (!a->factors_valid || reason < 0 || its > a->refactor_its) {
+    PetscCall(SNESSetLagPreconditioner(a->snes, -2));
+    a->factors_valid = PETSC_TRUE;
     ++a->factorisations;
-  }
+  } else PetscCall(SNESSetLagPreconditioner(a->snes, -1));
   PetscFunctionReturn(0);
 }
 
@@ -265,7 +268,8 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // Linear where it can be: the patches and seams are linear, so when no joint's tangent differs
   // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
   // object state, and PCSetUp then keeps the factorisation too.
-  if (a->opt.stuck_linear && J == a->J && (P == J || P == a->Pfac) && js.jac_valid) {
+  if (a->lagged && !a->lagged_ksp) PetscCall(AssemblyUseLaggedKSP(a)); // chosen by MUMPS's first analysis
+  if (a->opt.stuck_linear && J == a->J && P == J && js.jac_valid) {
     // Counted over all joints, for -info: how far the Jacobian is from the last one (a low-rank
     // update of a kept factorisation pays only when few joints change: docs/performance.md).
     PetscInt changed[2] = {0, (PetscInt)resp.size()}, total[2];
@@ -279,7 +283,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
       // same factorisations below as the run that was not interrupted.
       js.jac_state.resize(resp.size());
       for (size_t k = 0; k < resp.size(); ++k) js.jac_state[k] = StateCode(resp[k]);
-      if (P == a->Pfac) PetscCall(AssemblyLaggedFactorisation(a, J, P));
+      if (a->lagged) PetscCall(AssemblyLaggedFactorisation(a));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
       PetscFunctionReturn(0);
     }
@@ -288,7 +292,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // last iteration reduced the residual by keep_ratio and no joint changed state since J was
   // assembled. Only the bearing joints' contact directions (and sliding joints' tangents) have moved:
   // the step with the old factors then contracts about as fast as the factorisation saved is dear.
-  if (fast && J == a->J && P == J && js.jac_valid && js.jac_state.size() == resp.size()) {
+  if (fast && !a->lagged && J == a->J && P == J && js.jac_valid && js.jac_state.size() == resp.size()) {
     PetscInt changed = 0, total;
     for (size_t k = 0; k < resp.size(); ++k) changed += js.jac_state[k] != StateCode(resp[k]);
     PetscCallMPI(MPIU_Allreduce(&changed, &total, 1, MPIU_INT, MPI_SUM, a->comm));
@@ -299,9 +303,9 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
       PetscFunctionReturn(0);
     }
   }
-  // J = the linear part (Jbase) + the joints. In the lagged interface solve, P is the last matrix
-  // factored: the Krylov solve on J is preconditioned by it, and it is refactored only when needed.
-  Mat M = P == a->Pfac ? J : P;
+  // J = the linear part (Jbase) + the joints. In the lagged interface solve the PC may keep the
+  // factorisation of an earlier J: the Krylov solve on this J is preconditioned by it.
+  Mat M = P;
   PetscCall(MatCopy(a->Jbase, M, SAME_NONZERO_PATTERN));
   for (size_t k = 0; k < js.size(); ++k) {
     PetscScalar vals[144];
@@ -347,7 +351,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
     js.jac_tangent[k] = resp[k].tangent;
     js.jac_state[k]   = StateCode(resp[k]);
   }
-  if (M != P) PetscCall(AssemblyLaggedFactorisation(a, J, P));
+  if (a->lagged) PetscCall(AssemblyLaggedFactorisation(a));
   else if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));

@@ -290,33 +290,75 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
   PetscFunctionReturn(0);
 }
 
-// MUMPS's symbolic factorisation, then the choice above: F's own symbolic operation, wrapped
-// (MatSetOperation) so that every analysis PCSetUp makes, the first and any after a change of
-// nonzero pattern, is followed by the choice before its numeric factorisation.
-struct StorageChoice {
+// -interface_solve auto, once per run, from MUMPS's analysis of the first Jacobian (docs/solver.md,
+// "The interface solve"). A lagged Newton iteration costs a dozen or more triangular solves with the
+// factors (GMRES), a direct one a factorisation at most: the lagged solve pays where a factorisation
+// costs many solves. MUMPS's estimates say so before anything is factored: the factorisation's flops
+// (RINFOG(1)) per entry of the factors (INFOG(20)), an entry being read about once per solve. Factors
+// on disk are read back from disk at every solve, and another Krylov method or preconditioner than
+// the default's is the user's own choice: both stay direct. The estimates are global, so every rank
+// decides alike, and they depend on the matrix alone, so a run repeats its choice.
+static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
+{
+  PetscInt  info1, entries, icntl22;
+  PetscReal flops;
+  KSP       ksp;
+  PetscBool preonly;
+  PetscFunctionBeginUser;
+  a->solve_auto = PETSC_FALSE;
+  PetscCall(MatMumpsGetInfog(F, 1, &info1));
+  if (info1 < 0) PetscFunctionReturn(0); // the analysis failed: the factorisation reports it
+  PetscCall(MatMumpsGetIcntl(F, 22, &icntl22));
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(PetscObjectTypeCompare((PetscObject)ksp, KSPPREONLY, &preonly));
+  PetscCall(MatMumpsGetRinfog(F, 1, &flops));
+  PetscCall(MatMumpsGetInfog(F, 20, &entries)); // in millions when negative (MUMPS users' guide)
+  const double nentries = entries < 0 ? -1e6 * (double)entries : (double)entries;
+  const double ratio    = nentries > 0 ? flops / nentries : 0;
+  const bool   lagged   = preonly && icntl22 == 0 && ratio >= a->lagged_flops_per_entry;
+  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, (double)a->lagged_flops_per_entry,
+                      icntl22 ? "; factors on disk" : "", preonly ? "" : "; the KSP is not the default's"));
+  if (!lagged) PetscFunctionReturn(0);
+  // This analysis's factorisation is the lagged solve's first: the KSP becomes GMRES at the next
+  // Newton iteration (AssemblyFormJacobian), when no solve is under way.
+  a->lagged        = PETSC_TRUE;
+  a->factors_valid = PETSC_TRUE;
+  a->factorisations = 1;
+  PetscInt N;
+  PetscCall(MatGetSize(F, &N, nullptr));
+  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio, (double)a->lagged_flops_per_entry));
+  PetscFunctionReturn(0);
+}
+
+// MUMPS's symbolic factorisation, then the two choices above (factors on disk, and the automatic
+// interface solve): F's own symbolic operation, wrapped (MatSetOperation) so that every analysis
+// PCSetUp makes, the first and any after a change of nonzero pattern, is followed by the choices
+// before its numeric factorisation.
+struct AnalysisChoice {
   PetscErrorCode (*symbolic)(Mat, Mat, IS, IS, const MatFactorInfo *);
   BoltnetAssembly a;
 };
 
-static PetscErrorCode SymbolicThenChooseStorage(Mat F, Mat A, IS row, IS col, const MatFactorInfo *info)
+static PetscErrorCode SymbolicThenChoose(Mat F, Mat A, IS row, IS col, const MatFactorInfo *info)
 {
   PetscContainer container;
-  StorageChoice *choice;
+  AnalysisChoice *choice;
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_storage_choice", (PetscObject *)&container));
+  PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_analysis_choice", (PetscObject *)&container));
   PetscCall(PetscContainerGetPointer(container, (void **)&choice));
   PetscCall(choice->symbolic(F, A, row, col, info));
-  PetscCall(ChooseFactorStorage(choice->a, F));
+  if (choice->a->out_of_core && !choice->a->factors_on_disk) PetscCall(ChooseFactorStorage(choice->a, F));
+  if (choice->a->solve_auto) PetscCall(ChooseInterfaceSolve(choice->a, F));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode WrapSymbolic(BoltnetAssembly a, Mat F)
 {
   PetscContainer container;
-  StorageChoice *choice;
+  AnalysisChoice *choice;
   void (*symbolic)(void);
   PetscFunctionBeginUser;
-  PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_storage_choice", (PetscObject *)&container));
+  PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_analysis_choice", (PetscObject *)&container));
   if (container) PetscFunctionReturn(0); // this factor's analysis is wrapped already
   PetscCall(MatGetOperation(F, MATOP_LUFACTOR_SYMBOLIC, &symbolic));
   PetscCheck(symbolic, a->comm, PETSC_ERR_PLIB, "MUMPS's factor has no symbolic LU factorisation");
@@ -326,9 +368,9 @@ static PetscErrorCode WrapSymbolic(BoltnetAssembly a, Mat F)
   PetscCall(PetscContainerCreate(a->comm, &container));
   PetscCall(PetscContainerSetPointer(container, choice));
   PetscCall(PetscContainerSetUserDestroy(container, PetscContainerUserDestroyDefault));
-  PetscCall(PetscObjectCompose((PetscObject)F, "boltnet_storage_choice", (PetscObject)container));
+  PetscCall(PetscObjectCompose((PetscObject)F, "boltnet_analysis_choice", (PetscObject)container));
   PetscCall(PetscContainerDestroy(&container));
-  PetscCall(MatSetOperation(F, MATOP_LUFACTOR_SYMBOLIC, (void (*)(void))SymbolicThenChooseStorage));
+  PetscCall(MatSetOperation(F, MATOP_LUFACTOR_SYMBOLIC, (void (*)(void))SymbolicThenChoose));
   PetscFunctionReturn(0);
 }
 
@@ -341,14 +383,16 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   PetscFunctionBeginUser;
   PetscCall(MumpsLU(a, &ksp, &pc, &mumps));
   if (!mumps) PetscFunctionReturn(0);
-  PetscCall(KSPSetOperators(ksp, a->J, a->lagged ? a->Pfac : a->J));
+  PetscCall(KSPSetOperators(ksp, a->J, a->J));
   PetscCall(PCFactorSetUpMatSolverType(pc));
   PetscCall(PCFactorGetMatrix(pc, &F));
   // Set before the first factorisation; -mat_mumps_icntl_24 / -mat_mumps_cntl_3 still override them.
   PetscCall(MatMumpsSetIcntl(F, 24, 1));                   // null pivot row detection
   PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold)); // null below this x ||A_pre|| (CNTL(3) > 0: relative)
   if (a->factors_on_disk) PetscCall(MatMumpsSetIcntl(F, 22, 1)); // out-of-core factors (MUMPS_OOC_TMPDIR)
-  else if (a->out_of_core) PetscCall(WrapSymbolic(a, F));        // or out of core if they will not fit
+  // After MUMPS's analysis: out of core if the factors will not fit, and the automatic choice of
+  // the interface solve.
+  if ((a->out_of_core && !a->factors_on_disk) || a->solve_auto) PetscCall(WrapSymbolic(a, F));
   PetscFunctionReturn(0);
 }
 

@@ -19,16 +19,33 @@ namespace {
 PetscErrorCode ConvergedInBalance(SNES, PetscInt, PetscReal, PetscReal, PetscReal, SNESConvergedReason *, void *);
 }
 
+// The lagged solve's Krylov method: GMRES, right preconditioned so that it watches the true
+// residual of J, to 1e-10 of it. Called at set-up, or by the automatic choice before the Newton
+// iteration after MUMPS's first analysis (a KSP's type cannot change inside its own solve).
+PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
+{
+  KSP ksp;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPGMRES));
+  PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
+  PetscCall(KSPGMRESSetRestart(ksp, 100));
+  PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
+  a->lagged_ksp = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
 {
   SNESLineSearch ls;
   KSP            ksp;
   PC             pc;
   PetscFunctionBeginUser;
-  const char *isolves[] = {"direct", "lagged"};
-  PetscInt    isolve    = a->lagged ? 1 : 0;
+  const char *isolves[] = {"auto", "direct", "lagged"};
+  PetscInt    isolve    = a->solve_auto ? 0 : a->lagged ? 2 : 1;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
-  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes) or lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations): docs/solver.md", "AssemblySetUpSolver", isolves, 2, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, and the factors stay in memory", "AssemblySetUpSolver", a->lagged_flops_per_entry, &a->lagged_flops_per_entry, nullptr));
   PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->out_of_core, &a->out_of_core, nullptr));
   PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->memory_mb, &a->memory_mb, nullptr));
   PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->refactor_its, &a->refactor_its, nullptr));
@@ -36,19 +53,19 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscOptionsEnd();
   PetscCheck(a->keep_ratio >= 0 && a->keep_ratio < 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_keep_ratio %g must be in [0, 1): the factor by which the residual must fall per iteration for the factorisation to be kept (0: never kept)", (double)a->keep_ratio);
   PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
+  PetscCheck(a->lagged_flops_per_entry > 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_lagged_flops_per_entry %g must be > 0", (double)a->lagged_flops_per_entry);
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->storage_given));
   if (a->storage_given) a->out_of_core = PETSC_FALSE;
   PetscCheck(a->memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->memory_mb);
-  a->lagged = isolve == 1 ? PETSC_TRUE : PETSC_FALSE;
-  if (a->lagged && !a->Pfac) { // the lagged solve's own matrix; the direct solve factors J itself
-    PetscCall(MatDuplicate(a->J, MAT_DO_NOT_COPY_VALUES, &a->Pfac));
-    PetscCall(MatSetOption(a->Pfac, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
-  }
+  a->solve_auto = isolve == 0 ? PETSC_TRUE : PETSC_FALSE;
+  a->lagged     = isolve == 2 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
   PetscCall(SNESSetDM(a->snes, a->net.dm));
   PetscCall(SNESSetFunction(a->snes, nullptr, AssemblyFormFunction, a));
-  PetscCall(SNESSetJacobian(a->snes, a->J, a->lagged ? a->Pfac : a->J, AssemblyFormJacobian, a));
+  // Both solves precondition with a factorisation of J itself: the lagged one keeps an earlier
+  // one in the PC (AssemblyLaggedFactorisation) instead of factoring a copy of J.
+  PetscCall(SNESSetJacobian(a->snes, a->J, a->J, AssemblyFormJacobian, a));
   PetscCall(SNESMonitorSet(a->snes, MonitorJointStates, a, nullptr));
   // Defaults that the command line overrides: Newton with boltnet's line search, direct solve.
   PetscCall(SNESSetType(a->snes, SNESNEWTONLS));
@@ -56,12 +73,8 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBOLTNET));
   PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, 1e-10, 0.0, 50, PETSC_DEFAULT));
   PetscCall(SNESGetKSP(a->snes, &ksp));
-  if (a->lagged) { // right preconditioning: GMRES then watches the true residual of J
-    PetscCall(KSPSetType(ksp, KSPGMRES));
-    PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
-    PetscCall(KSPGMRESSetRestart(ksp, 100));
-    PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
-  } else PetscCall(KSPSetType(ksp, KSPPREONLY));
+  if (a->lagged) PetscCall(AssemblyUseLaggedKSP(a));
+  else PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
@@ -393,7 +406,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
           a->factors_on_disk = PETSC_TRUE;
           PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)\n", a->steps.size() + 1, fatal.c_str()));
           PetscCall(PCReset(pc));
-          a->pfac_valid = PETSC_FALSE;
+          a->factors_valid = PETSC_FALSE;
           PetscCall(AssemblySetUpNullPivots(a));
           continue;
         }
@@ -410,7 +423,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
           PetscCall(AssemblyCheckNullPivots(a, &nnull));
         }
         PetscCall(PCReset(pc));
-        a->pfac_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
+        a->factors_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
         PetscCall(AssemblySetUpNullPivots(a));
         if (!a->singular.empty()) singular = a->singular;
         else PetscCall(AssemblyDescribeSingular(a, Xtry, singular));
