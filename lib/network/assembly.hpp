@@ -172,6 +172,7 @@ struct _p_BoltnetAssembly {
   PetscBool lagged                 = PETSC_FALSE;
   PetscBool solve_auto             = PETSC_TRUE;
   PetscBool lagged_ksp             = PETSC_FALSE; // the KSP is set up for the lagged solve
+  PetscBool lagged_auto            = PETSC_FALSE; // lagged by auto's choice: direct again if the factors go to disk
   PetscReal lagged_flops_per_entry = 1000;
   PetscInt  refactor_its           = 25;
   PetscBool factors_valid          = PETSC_FALSE; // the PC's factors are of a Jacobian of this analysis
@@ -297,6 +298,9 @@ std::string    DescribeEquilibrium(const Equilibrium &eq);
 PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
 // The lagged interface solve's Krylov method (GMRES, right preconditioned) on the SNES's KSP.
 PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a);
+// Back to the direct solve (a KSP that applies the factorisation, refactored whenever J changes),
+// where the automatic choice had taken the lagged one and the factors then had to go to disk.
+PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a);
 // After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->singular
 // names the mechanism (patches, dof, joints) from a null vector of the Jacobian.
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull);

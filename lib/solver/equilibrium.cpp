@@ -322,6 +322,7 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   // This analysis's factorisation is the lagged solve's first: the KSP becomes GMRES at the next
   // Newton iteration (AssemblyFormJacobian), when no solve is under way.
   a->lagged        = PETSC_TRUE;
+  a->lagged_auto   = PETSC_TRUE;
   a->factors_valid = PETSC_TRUE;
   a->factorisations = 1;
   PetscInt N;

@@ -35,6 +35,22 @@ PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// The direct solve's KSP again, for a lagged solve that the automatic choice made in core and whose
+// factors then had to go to disk (a factorisation that ran out of memory): on disk, every triangular
+// solve reads the factors back, and auto would have chosen direct (docs/solver.md, "Which one the
+// default takes"). SNES's lag of the preconditioner goes back to 1: refactor whenever J changes.
+PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
+{
+  KSP ksp;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(SNESSetLagPreconditioner(a->snes, 1));
+  a->lagged = a->lagged_ksp = a->lagged_auto = PETSC_FALSE;
+  a->factorisations = 0;
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
 {
   SNESLineSearch ls;
@@ -404,7 +420,8 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         PetscCall(AssemblyFactorError(a, fatal, advice, &memory));
         if (!fatal.empty() && memory && a->out_of_core && !a->factors_on_disk) {
           a->factors_on_disk = PETSC_TRUE;
-          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)\n", a->steps.size() + 1, fatal.c_str()));
+          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(), a->lagged_auto ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk" : ""));
+          if (a->lagged_auto) PetscCall(AssemblyUseDirectKSP(a));
           PetscCall(PCReset(pc));
           a->factors_valid = PETSC_FALSE;
           PetscCall(AssemblySetUpNullPivots(a));
