@@ -44,18 +44,22 @@ endforeach()
 # direct again when the factorisation runs out of memory and the factors go to disk, as auto would
 # have chosen with factors on disk (docs/solver.md, "Which one the default takes"); the retry still
 # converges to the closed-form load shares.
-set(out ${BOLTNET_OUT}/factor_out_of_core_auto_lagged)
-add_test(NAME factor_out_of_core_auto_lagged_np1
-  COMMAND ${BOLTNET_EXPECT} --match "the interface solve is lagged" --match "factoring again with the factors on disk .*; the interface solve is direct again"
-          --match "1 steps converged \\(0 cut-backs\\)" -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml
-          -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 30 -interface_lagged_flops_per_entry 1 -malloc_debug -malloc_dump)
-set_tests_properties(factor_out_of_core_auto_lagged_np1 PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_SETUP factor_out_of_core_auto_lagged
-  FAIL_REGULAR_EXPRESSION "PETSC ERROR;bytes [A-Za-z_0-9]+\\(\\) at ")
-add_test(NAME factor_out_of_core_auto_lagged_direct
-  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk']); sys.exit(0 if s['interface_solve'] == 'direct' and s['factors_on_disk'] else 1)" ${out}/summary.json)
-add_test(NAME factor_out_of_core_auto_lagged_load_shares
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
-set_tests_properties(factor_out_of_core_auto_lagged_direct factor_out_of_core_auto_lagged_load_shares PROPERTIES FIXTURES_REQUIRED factor_out_of_core_auto_lagged)
+foreach(ranks 1 2 3)
+  set(out ${BOLTNET_OUT}/factor_out_of_core_auto_lagged_np${ranks})
+  add_test(NAME factor_out_of_core_auto_lagged_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "the interface solve is lagged" --match "factoring again with the factors on disk .*; the interface solve is direct again"
+            --match "1 steps converged \\(0 cut-backs\\)" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver>
+            -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 30
+            -interface_lagged_flops_per_entry 1 -malloc_debug -malloc_dump)
+  set_tests_properties(factor_out_of_core_auto_lagged_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}"
+    FIXTURES_SETUP factor_out_of_core_auto_lagged_np${ranks} FAIL_REGULAR_EXPRESSION "PETSC ERROR;bytes [A-Za-z_0-9]+\\(\\) at ")
+  add_test(NAME factor_out_of_core_auto_lagged_direct_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk']); sys.exit(0 if s['interface_solve'] == 'direct' and s['factors_on_disk'] else 1)" ${out}/summary.json)
+  add_test(NAME factor_out_of_core_auto_lagged_load_shares_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+  set_tests_properties(factor_out_of_core_auto_lagged_direct_np${ranks} factor_out_of_core_auto_lagged_load_shares_np${ranks}
+    PROPERTIES FIXTURES_REQUIRED factor_out_of_core_auto_lagged_np${ranks})
+endforeach()
 # -interface_out_of_core false: the first failure stops the run.
 boltnet_expect(factor_no_out_of_core 1 --status 3
   --match "FAILED: Load step 1 from load factor 0 to 1: MUMPS could not factor the 26472-dof Jacobian \\(INFOG\\(1\\) = -19"
