@@ -9,7 +9,11 @@
 //      (a point whose ||F|| the iterates have not beaten since). When many joints leave stick in
 //      the same step, full Newton steps raise ||F|| before they converge; a monotone search rejects
 //      them and advances one state change per iteration. When the iterates chatter between states
-//      instead, the watchdog runs out and steps 1-3 take over from where they are;
+//      instead, the watchdog runs out and steps 1-3 take over from where they are. Once an iterate
+//      has beaten the solve's starting point, the watchdog also tries the half step and takes it
+//      where it is the better: full steps that overshoot to the far side of the solution, each a
+//      little below the last reference point, would otherwise keep the watchdog going for tens of
+//      iterations (plate grids of 10 x 9 plates and more, docs/solver.md);
 //   1. tries the full (damped) step and accepts it on sufficient decrease of ||F|| (as PETSc's bt);
 //   2. otherwise, if a joint-state function was attached (boltnet's assembly does it), bisects the
 //      step for the first point where a joint changes state and tries just past it: up to that point
@@ -55,6 +59,7 @@ struct LineSearchBoltnet {
   PetscReal            growth    = 1e3;   // ... while ||F|| stays below growth * reference
   PetscInt             watch     = 0;     // steps taken since the reference point
   PetscReal            ref       = 0;     // ||F|| at the reference point
+  PetscBool            beaten    = PETSC_FALSE; // an iterate of this solve has beaten its starting point
   BoltnetStateChangeFn statefn   = nullptr; // set by SNESLineSearchBoltnetSetStateChangeFunction()
   void                *statectx  = nullptr;
   Vec                  sref = nullptr, strial = nullptr; // switch indicators at X and at the trial point
@@ -62,6 +67,8 @@ struct LineSearchBoltnet {
   PetscInt             backtracks = 0;
   PetscInt             relaxed    = 0;    // full steps taken by the watchdog
   PetscInt             extended   = 0;    // plateau steps lengthened to the next state change
+  PetscBool            halve      = PETSC_TRUE; // the watchdog tries the half step too, and takes the better
+  PetscInt             halved     = 0;    // watchdog steps where the half step was the better
 };
 
 // ||F|| unchanged by a step, to round-off: the residual is flat along it.
@@ -213,8 +220,9 @@ PetscErrorCode SNESLineSearchApplyImpl(SNESLineSearch ls)
   lambda = ls->damping;
 
   if (snes->iter == 0) { // a new solve: the starting point is the reference
-    bn->watch = 0;
-    bn->ref   = fnorm;
+    bn->watch  = 0;
+    bn->ref    = fnorm;
+    bn->beaten = PETSC_FALSE;
   }
   StateSource src;
   PetscCall(GetStateSource(bn, snes, &src));
@@ -269,6 +277,19 @@ PetscErrorCode SNESLineSearchApplyImpl(SNESLineSearch ls)
       PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm)); // back to the full step for what follows
     }
     if (it == 0 && states && bn->watch < bn->watchdog && std::isfinite(gnorm) && gnorm <= bn->growth * bn->ref) {
+      if (bn->halve && bn->beaten) { // iterates that overshoot to the far side of the solution: the half step lands nearer
+        PetscReal ghalf;
+        PetscCall(TryStep(ls, snes, X, Y, 0.5 * lambda, W, G, &ghalf));
+        if (std::isfinite(ghalf) && ghalf < gnorm) {
+          if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: watchdog takes the half step, ||F|| %g -> %g (the full step: %g)\n", (double)fnorm, (double)ghalf, (double)gnorm));
+          lambda   = 0.5 * lambda;
+          gnorm    = ghalf;
+          accepted = PETSC_TRUE;
+          bn->halved++;
+          break;
+        }
+        PetscCall(TryStep(ls, snes, X, Y, lambda, W, G, &gnorm)); // back to the full step
+      }
       accepted = PETSC_TRUE; // the watchdog's full step
       bn->relaxed++;
       if (ls->monitor) PetscCall(PetscViewerASCIIPrintf(ls->monitor, "    Line search: watchdog takes the full step, ||F|| %g -> %g (%" PetscInt_FMT " of %" PetscInt_FMT " without progress)\n", (double)fnorm, (double)gnorm, bn->watch + 1, bn->watchdog));
@@ -318,8 +339,9 @@ PetscErrorCode SNESLineSearchApplyImpl(SNESLineSearch ls)
   }
   // Progress against the reference point resets the watchdog; any other step uses it up.
   if (gnorm * gnorm <= (1.0 - 2.0 * bn->alpha) * bn->ref * bn->ref) {
-    bn->watch = 0;
-    bn->ref   = gnorm;
+    bn->watch  = 0;
+    bn->ref    = gnorm;
+    bn->beaten = PETSC_TRUE;
   } else bn->watch++;
   PetscCall(SNESLineSearchPostCheck(ls, X, Y, W, &changed_y, &changed_w));
   if (changed_w) {
@@ -350,6 +372,7 @@ PetscErrorCode SNESLineSearchSetFromOptions_Boltnet(SNESLineSearch ls, PetscOpti
   PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_watchdog", "With a state function: full Newton steps allowed in a row without decreasing ||F|| below the last reference point (0: monotone search)", "SNESLineSearchBoltnet", bn->watchdog, &bn->watchdog, nullptr));
   PetscCall(PetscOptionsReal("-snes_linesearch_boltnet_growth", "The watchdog's full steps are taken while ||F|| stays below this multiple of the reference point's", "SNESLineSearchBoltnet", bn->growth, &bn->growth, nullptr));
   PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_extensions", "With a state function: doublings of a step along which ||F|| stays flat, looking for the next state change (0: none)", "SNESLineSearchBoltnet", bn->extensions, &bn->extensions, nullptr));
+  PetscCall(PetscOptionsBool("-snes_linesearch_boltnet_halve", "With a state function: where the watchdog would take a full step that does not decrease ||F||, try the half step too and take the better", "SNESLineSearchBoltnet", bn->halve, &bn->halve, nullptr));
   PetscCall(PetscOptionsInt("-snes_linesearch_boltnet_bisections", "With a state function: bisections that locate the first state change along the step (resolution 2^-n)", "SNESLineSearchBoltnet", bn->bisections, &bn->bisections, nullptr));
   PetscOptionsHeadEnd();
   PetscCheck(bn->alpha > 0 && bn->alpha < 0.5, PetscObjectComm((PetscObject)ls), PETSC_ERR_ARG_OUTOFRANGE, "-snes_linesearch_boltnet_alpha %g must lie in (0, 0.5)", (double)bn->alpha);
@@ -372,7 +395,7 @@ PetscErrorCode SNESLineSearchView_Boltnet(SNESLineSearch ls, PetscViewer viewer)
     PetscCall(SNESLineSearchGetSNES(ls, &snes));
     PetscCall(GetStateSource(bn, snes, &src));
     PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: alpha %g, watchdog %" PetscInt_FMT " steps below %g x reference, %" PetscInt_FMT " bisections, state function %s\n", (double)bn->alpha, bn->watchdog, (double)bn->growth, bn->bisections, StateKindName(src.kind)));
-    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: watchdog full steps %" PetscInt_FMT ", steps limited to a state change %" PetscInt_FMT ", plateau steps lengthened %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->relaxed, bn->kinkSteps, bn->extended, bn->backtracks));
+    PetscCall(PetscViewerASCIIPrintf(viewer, "  boltnet: watchdog full steps %" PetscInt_FMT ", half steps %" PetscInt_FMT ", steps limited to a state change %" PetscInt_FMT ", plateau steps lengthened %" PetscInt_FMT ", quadratic backtracks %" PetscInt_FMT "\n", bn->relaxed, bn->halved, bn->kinkSteps, bn->extended, bn->backtracks));
   }
   PetscFunctionReturn(0);
 }
