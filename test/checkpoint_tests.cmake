@@ -158,9 +158,10 @@ boltnet_expect(checkpoint_help 1 --match "-checkpoint_every <now 0 : formerly 0>
 # direct solve's joints.csv to 1e-8, and the restarted run is lagged too.
 # On 2 ranks the run killed at step 10 is restarted on 3, whose analysis makes the choice again.
 foreach(ranks 1 2)
-  math(EXPR restart_ranks "${ranks} + 1")
   if(ranks EQUAL 1)
     set(restart_ranks 1)
+  else()
+    math(EXPR restart_ranks "${ranks} + 1")
   endif()
   boltnet_run(fig3a_auto_lagged ${ranks} ${BOLTNET_SCENES}/fig3a.yaml -interface_lagged_flops_per_entry 1)
   add_test(NAME fig3a_auto_lagged_same_as_direct_np${ranks}
