@@ -249,7 +249,7 @@ PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o,
   // stops with one line).
   auto describe = [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
-    PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %zu joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.joints.size(), a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
+    PetscCall(PetscPrintf(comm, "boltnet: scene %s, %" PetscInt_FMT " parts in %zu patches (%zu seams), %" PetscInt_FMT " joints, %" PetscInt_FMT " dof on %d rank(s) (dof imbalance max/mean %.2f)", scene.name.c_str(), a->layout.nparts, a->layout.patches.size(), a->layout.seams.size(), a->layout.njoints, a->net.ndof_model, a->size, (double)a->net.dof_imbalance));
     if (a->net.ncondensed) PetscCall(PetscPrintf(comm, "; %" PetscInt_FMT " of the patches condensed, onto %" PetscInt_FMT " interface dof", a->net.ncondensed, a->net.ndof_global));
     PetscCall(PetscPrintf(comm, "\n"));
     if (cases.size() > 1 || !cases[0].name.empty()) {

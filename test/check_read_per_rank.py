@@ -1,16 +1,19 @@
 #!/usr/bin/python3
-"""Checks that each shell part is read and laid out by one rank only (lib/patch/layout.cpp).
+"""Checks that each shell part is read and laid out by one rank only (lib/patch/layout.cpp), and
+that past the set-up each rank keeps the components of its own joints only (lib/network/build.cpp).
 
   check_read_per_rank.py SCENE.yaml RANKS -- COMMAND...
 
-Runs COMMAND (an mpirun of the driver with -info) and reads each rank's line
+Runs COMMAND (an mpirun of the driver with -info) and reads each rank's lines
 
   [r] LayoutCreate(): Read and laid out K of P shell parts (n of N mesh nodes) on this rank
+  [r] ReleaseUnowned(): Kept the components of j of J joints on this rank past the set-up
 
-The reference is the scene's own patches table, read here: P must be its number of shell rows (plate
-or gmsh), N the nodes of those parts (a plate's (nx + 1) (ny + 1); a Gmsh part's nodes, counted in
-its file by its physical surface's elements). Over the ranks the K must add up to P and the n to N
-(every part read once), and with several ranks and parts no rank may read them all.
+The reference is the scene's own tables, read here: P must be the patches table's number of shell
+rows (plate or gmsh), N the nodes of those parts (a plate's (nx + 1) (ny + 1); a Gmsh part's nodes,
+counted in its file by its physical surface's elements), J the joints table's rows. Over the ranks
+the K must add up to P, the n to N and the j to J (every part read once, every joint kept once), and
+with several ranks no rank may read every part or keep every joint.
 """
 import csv
 import os
@@ -73,6 +76,14 @@ def scene_parts(scene):
     return parts, nodes
 
 
+def scene_joints(scene):
+    """The rows of the scene's joints table."""
+    text = open(scene).read()
+    m = re.search(r"^\s*joints:\s*(\S+)", text, re.M)
+    table = os.path.join(os.path.dirname(scene), m.group(1))
+    return sum(1 for _ in csv.DictReader(line for line in open(table) if not line.startswith("#")))
+
+
 def main():
     scene, ranks = sys.argv[1], int(sys.argv[2])
     cmd = sys.argv[sys.argv.index("--") + 1:]
@@ -81,12 +92,17 @@ def main():
         print(out.stdout[-3000:])
         sys.exit(f"the run exited {out.returncode}")
     pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read and laid out (\d+) of (\d+) shell parts \((\d+) of (\d+) mesh nodes\)")
-    seen = {}
+    kept_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Kept the components of (\d+) of (\d+) joints on this rank past the set-up")
+    seen, kept = {}, {}
     for line in out.stdout.splitlines():
         g = pat.match(line)
         if g:
             seen[int(g.group(1))] = tuple(int(x) for x in g.groups()[1:])
+        g = kept_pat.match(line)
+        if g:
+            kept[int(g.group(1))] = (int(g.group(2)), int(g.group(3)))
     P, N = scene_parts(scene)
+    J = scene_joints(scene)
     bad = []
     if sorted(seen) != list(range(ranks)):
         bad.append(f"lines from ranks {sorted(seen)}, expected 0..{ranks - 1}")
@@ -100,9 +116,19 @@ def main():
         bad.append(f"the ranks read {sum(v[0] for v in seen.values())} parts in all, the scene has {P}")
     if sum(v[2] for v in seen.values()) != N:
         bad.append(f"the ranks read {sum(v[2] for v in seen.values())} nodes in all, the scene has {N}")
+    if sorted(kept) != list(range(ranks)):
+        bad.append(f"joint lines from ranks {sorted(kept)}, expected 0..{ranks - 1}")
+    for r, (j, tot) in sorted(kept.items()):
+        print(f"rank {r}: kept {j} of {tot} joints")
+        if tot != J:
+            bad.append(f"rank {r} counts {tot} joints; the scene has {J}")
+        if ranks > 1 and J > 1 and j == J:
+            bad.append(f"rank {r} kept every joint")
+    if sum(v[0] for v in kept.values()) != J:
+        bad.append(f"the ranks kept {sum(v[0] for v in kept.values())} joints in all, the scene has {J}")
     if bad:
         sys.exit("FAIL: " + "; ".join(bad))
-    print(f"every one of the {P} shell parts ({N} nodes) read by one rank of {ranks}")
+    print(f"every one of the {P} shell parts ({N} nodes) read by one rank of {ranks}, each of its {J} joints kept by one")
 
 
 if __name__ == "__main__":

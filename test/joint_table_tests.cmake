@@ -83,6 +83,12 @@ add_test(NAME restart_chain_table_both_np3_to_np1
   COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n 3 --oversubscribe \"$1\" -scene \"$2\" -output_joints both -checkpoint_every 20 -output_dir \"$3\" > /dev/null && mv \"$3/joints.h5\" \"$3/joints.h5.away\" && \"$4\" --fail --max-lines 2 --unchanged \"$3/joints.csv\" --match \"Cannot restart: there is no readable joint table .*joints.h5 to continue\" -- \"$1\" -scene \"$2\" -output_joints both -output_dir \"$3\" -restart \"$3/checkpoint.h5\" && mv \"$3/joints.h5.away\" \"$3/joints.h5\" && \"$4\" --match \"restart from .* at step 20\" -- \"$1\" -scene \"$2\" -output_joints both -output_dir \"$3\" -restart \"$3/checkpoint.h5\" && \"$5\" \"$6\" \"$3\" && \"$5\" \"$6\" \"$3\" --ref \"$7\" --rtol 1e-10"
           ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:boltnet_driver> ${_chain} ${BOLTNET_OUT}/restart_chain_both ${BOLTNET_EXPECT} ${BOLTNET_PYTHON} ${_table} ${BOLTNET_OUT}/chain_table_np1)
 set_tests_properties(restart_chain_table_both_np3_to_np1 PROPERTIES PROCESSORS 3 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED chain_table_np1)
+# A table whose last row names a joint the model does not have is refused before anything changes:
+# on 3 ranks only the last rank reads that row, and every rank stops with its reason.
+add_test(NAME restart_table_other_joint_np3
+  COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n 3 --oversubscribe \"$1\" -scene \"$2\" -output_joints hdf5 -checkpoint_every 20 -output_dir \"$3\" > /dev/null && \"$5\" \"$6\" \"$3/joints.h5\" && \"$4\" --fail --max-lines 2 --unchanged \"$3/joints.h5\" --match \"Cannot restart: .*joints.h5 is not the joint table of the run that wrote the checkpoint: its joints are not the model's\" -- \"$0\" -n 3 --oversubscribe --quiet \"$1\" -scene \"$2\" -output_joints hdf5 -output_dir \"$3\" -restart \"$3/checkpoint.h5\""
+          ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:boltnet_driver> ${_chain} ${BOLTNET_OUT}/restart_table_other_joint ${BOLTNET_EXPECT} ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/renumber_table_joint.py)
+set_tests_properties(restart_table_other_joint_np3 PROPERTIES PROCESSORS 3 ENVIRONMENT "${BOLTNET_ENV}")
 # Another -output_joints than the checkpoint's run is refused (its files could not be continued).
 boltnet_expect(restart_refuses_other_joint_output 1 --fail --max-lines 2 --unchanged ${BOLTNET_OUT}/ckpt_fig3c/joints.csv
   --match "other options that change results: -output_joints hdf5 \\(checkpoint: not given\\)"

@@ -60,16 +60,12 @@ PetscErrorCode NaturalScatter(BoltnetAssembly a, Vec xnat, VecScatter *sc)
   PetscFunctionReturn(0);
 }
 
-// The row of each local joint among the joints sorted by id.
+// The row of each local joint among the joints sorted by id (JointComp::row).
 std::vector<PetscInt> JointRows(BoltnetAssembly a)
 {
-  const auto           &J = a->layout.joints;
-  std::vector<PetscInt> order(J.size()), row(J.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](PetscInt l, PetscInt r) { return J[l].id < J[r].id; });
-  for (size_t r = 0; r < order.size(); ++r) row[order[r]] = (PetscInt)r;
   std::vector<PetscInt> mine;
-  for (const JointComp &c : a->joints.comp) mine.push_back(row[c.index]);
+  mine.reserve(a->joints.size());
+  for (const JointComp &c : a->joints.comp) mine.push_back(c.row);
   return mine;
 }
 
@@ -137,7 +133,7 @@ PetscErrorCode StateVectors(BoltnetAssembly a, Vec *x, Vec *j, Vec *s, Vec *xp)
   PetscCall(VecScatterDestroy(&sc));
 
   PetscCall(VecCreate(a->comm, j));
-  PetscCall(VecSetSizes(*j, PETSC_DECIDE, kRow * (PetscInt)a->layout.joints.size()));
+  PetscCall(VecSetSizes(*j, PETSC_DECIDE, kRow * a->layout.njoints));
   PetscCall(VecSetBlockSize(*j, kRow));
   PetscCall(VecSetType(*j, VECSTANDARD));
   PetscCall(PetscObjectSetName((PetscObject)*j, "joints"));
@@ -225,7 +221,7 @@ PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, 
   PetscCheck(!a->steps.empty(), a->comm, PETSC_ERR_ORDER, "A checkpoint is written after a converged step");
   s.format = kFormat, s.scene = id.scene, s.options = id.options, s.parts = id.parts, s.joints = id.joints, s.bcs = id.bcs;
   s.layout = a->layout.fingerprint, s.ranks = a->size, s.npatches = (PetscInt)a->layout.patches.size();
-  s.ndof = a->net.ndof_global, s.njoints = (PetscInt)a->layout.joints.size(), s.nsteps = (PetscInt)a->steps.size();
+  s.ndof = a->net.ndof_global, s.njoints = a->layout.njoints, s.nsteps = (PetscInt)a->steps.size();
   s.ntargets = a->path.ntargets, s.target = a->path.target, s.halved = a->path.halved, s.start = a->path.start, s.sub = a->path.sub;
   s.cutbacks = a->total_cutbacks, s.jac_assembled = a->joints.jac_assembled, s.jac_reused = a->joints.jac_reused;
   s.frozen_joint_steps = a->joints.frozen_joint_steps, s.joint_steps = a->joints.joint_steps, s.released = a->joints.released;

@@ -88,26 +88,77 @@ herr_t WriteSlab(hid_t dset, hid_t type, int rank, const hsize_t *dims, bool ext
   return H5Dwrite(dset, type, mspace, fspace, dxpl, n ? buf : &none);
 }
 
-// The model's joint ids, sorted: row r of the table is joint ids[r].
-std::vector<PetscInt> SortedIds(BoltnetAssembly a)
-{
-  std::vector<PetscInt> ids;
-  ids.reserve(a->layout.joints.size());
-  for (const JointComp &j : a->layout.joints) ids.push_back(j.id);
-  std::sort(ids.begin(), ids.end());
-  return ids;
-}
-
-// The rows of the joints this rank owns (every rank holds the model's joint list: no communication
-// but the scan of the counts).
-PetscErrorCode SetUpRows(BoltnetAssembly a, const std::vector<PetscInt> &ids, JointTable *t)
+// The rows of the joints this rank owns: the joints by increasing id (JointComp::row, numbered when
+// the model was laid out, so that no rank needs the model's whole joint list here).
+PetscErrorCode SetUpRows(BoltnetAssembly a, FieldSpace *rows)
 {
   PetscFunctionBeginUser;
-  t->rows.natural.clear();
-  for (size_t k = 0; k < a->joints.size(); ++k) t->rows.natural.push_back((PetscInt)(std::lower_bound(ids.begin(), ids.end(), a->joints.comp[k].id) - ids.begin()));
-  PetscCall(FieldSpaceSetUp(a->comm, t->rows));
-  PetscCheck(t->rows.nglobal == (PetscInt)ids.size(), a->comm, PETSC_ERR_PLIB, "The joint table's rows do not cover the model's joints once");
+  rows->natural.clear();
+  for (const JointComp &c : a->joints.comp) rows->natural.push_back(c.row);
+  PetscCall(FieldSpaceSetUp(a->comm, *rows));
+  PetscCheck(rows->nglobal == a->layout.njoints, a->comm, PETSC_ERR_PLIB, "The joint table's rows do not cover the model's joints once");
   PetscFunctionReturn(0);
+}
+
+// Collective: the ids of this rank's rows of the table, [start, start + nlocal), sent by the ranks
+// that own the joints.
+PetscErrorCode RowIds(BoltnetAssembly a, FieldSpace &rows, std::vector<PetscInt> *ids)
+{
+  std::vector<double> owned;
+  Vec                 natural;
+  const PetscScalar  *p;
+  PetscFunctionBeginUser;
+  for (const JointComp &c : a->joints.comp) owned.push_back((double)c.id); // an id is exact as a double
+  PetscCall(FieldSpaceNatural(a->comm, rows, 1, owned, &natural));
+  PetscCall(VecGetArrayRead(natural, &p));
+  ids->assign(rows.nlocal, 0);
+  for (PetscInt i = 0; i < rows.nlocal; ++i) (*ids)[i] = (PetscInt)PetscRealPart(p[i]);
+  PetscCall(VecRestoreArrayRead(natural, &p));
+  PetscCall(FieldSpaceRelease(rows, 1));
+  PetscFunctionReturn(0);
+}
+
+// One rank's share of JointTableCheck: the table's shape, its steps, and its ids at this rank's rows.
+std::string CheckRows(const std::string &path, PetscInt k, const FieldSpace &rows, const std::vector<PetscInt> &ids)
+{
+  hid_t pint;
+  if (PetscDataTypeToHDF5DataType(PETSC_INT, &pint)) return "PETSc error";
+  const hsize_t J = (hsize_t)rows.nglobal;
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  const std::string not_it = "Cannot restart: " + path + " is not the joint table of the run that wrote the checkpoint: ";
+  if (file < 0) return "Cannot restart: there is no readable joint table " + path + " to continue (-output_dir must name the directory of the run that wrote the checkpoint, with the same -output_joints)";
+  // The shape of a dataset, or an empty vector.
+  const auto shape = [&](const char *name) {
+    std::vector<hsize_t> dims;
+    if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return dims;
+    H5Id dset(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
+    H5Id space(dset < 0 ? -1 : H5Dget_space(dset), H5Sclose);
+    const int n = space < 0 ? -1 : H5Sget_simple_extent_ndims(space);
+    if (n <= 0) return dims;
+    dims.resize((size_t)n);
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    return dims;
+  };
+  // n values of a one-dimensional dataset from offset off.
+  const auto read = [&](const char *name, hsize_t off, size_t n, std::vector<PetscInt> &v) {
+    v.assign(n, 0);
+    H5Id dset(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
+    H5Id fspace(dset < 0 ? -1 : H5Dget_space(dset), H5Sclose);
+    const hsize_t cnt = n;
+    H5Id mspace(H5Screate_simple(1, &cnt, nullptr), H5Sclose);
+    return fspace >= 0 && mspace >= 0 && (n == 0 || H5Sselect_hyperslab(fspace, H5S_SELECT_SET, &off, nullptr, &cnt, nullptr) >= 0) && (n == 0 || H5Dread(dset, pint, mspace, fspace, H5P_DEFAULT, v.data()) >= 0);
+  };
+  std::vector<PetscInt> v;
+  if (shape("joint") != std::vector<hsize_t>{J} || !read("joint", (hsize_t)rows.start, ids.size(), v) || v != ids) return not_it + "its joints are not the model's";
+  for (const Dataset &d : StepDatasets()) {
+    const std::vector<hsize_t> dims = shape(d.name);
+    if (dims.empty() || dims[0] < (hsize_t)k || (d.width > 0 && dims[1] != J)) return not_it + "its dataset " + d.name + " does not hold " + std::to_string(k) + " steps of " + std::to_string(J) + " joints";
+  }
+  if (!read("step", 0, (size_t)k, v)) return not_it + "its steps cannot be read";
+  for (PetscInt s = 0; s < k; ++s)
+    if (v[(size_t)s] != s + 1) return not_it + "its row " + std::to_string(s) + " is step " + std::to_string(v[(size_t)s]) + ", not " + std::to_string(s + 1);
+  return "";
 }
 
 } // namespace
@@ -140,13 +191,14 @@ JointFiles JointFilesFor(const JointOutputOptions &o, size_t njoints)
 
 PetscErrorCode JointTableCreate(BoltnetAssembly a, const std::string &scene, const std::string &path, JointTable *t)
 {
-  hid_t                       file, pint;
-  const std::vector<PetscInt> ids = SortedIds(a);
-  const hsize_t               J   = ids.size();
+  hid_t                 file, pint;
+  std::vector<PetscInt> ids; // of this rank's rows
   PetscFunctionBeginUser;
   t->path   = path;
   t->nsteps = 0;
-  PetscCall(SetUpRows(a, ids, t));
+  PetscCall(SetUpRows(a, &t->rows));
+  PetscCall(RowIds(a, t->rows, &ids));
+  const hsize_t J = (hsize_t)t->rows.nglobal;
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // the caller's message names the file and the reason
   PetscCall(PetscViewerHDF5Open(a->comm, path.c_str(), FILE_MODE_WRITE, &t->viewer));
   PetscCall(PetscViewerHDF5GetFileId(t->viewer, &file));
@@ -159,7 +211,7 @@ PetscErrorCode JointTableCreate(BoltnetAssembly a, const std::string &scene, con
     H5Id          space(H5Screate_simple(1, dims, nullptr), H5Sclose);
     H5Id          dset(space < 0 ? -1 : H5Dcreate2(file, "joint", pint, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
     ok = ok && dset >= 0 && StringAttribute(dset, "meaning", "user id of the joint of each row (increasing)") >= 0 &&
-         WriteSlab(dset, pint, 1, dims, false, (hsize_t)t->rows.start, 0, (hsize_t)t->rows.nlocal, ids.data() + t->rows.start) >= 0;
+         WriteSlab(dset, pint, 1, dims, false, (hsize_t)t->rows.start, 0, (hsize_t)t->rows.nlocal, ids.data()) >= 0;
   }
   // state_names (5): the name of each state code, as joints.csv writes it.
   {
@@ -188,45 +240,31 @@ PetscErrorCode JointTableCreate(BoltnetAssembly a, const std::string &scene, con
   PetscFunctionReturn(0);
 }
 
-std::string JointTableCheck(BoltnetAssembly a, const std::string &path, PetscInt k)
+PetscErrorCode JointTableCheck(BoltnetAssembly a, const std::string &path, PetscInt k, std::string *why)
 {
-  const std::vector<PetscInt> ids = SortedIds(a);
-  hid_t                       pint;
-  if (PetscDataTypeToHDF5DataType(PETSC_INT, &pint)) return "PETSc error";
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  H5Id file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
-  const std::string not_it = "Cannot restart: " + path + " is not the joint table of the run that wrote the checkpoint: ";
-  if (file < 0) return "Cannot restart: there is no readable joint table " + path + " to continue (-output_dir must name the directory of the run that wrote the checkpoint, with the same -output_joints)";
-  // The shape of a dataset, or an empty vector.
-  const auto shape = [&](const char *name) {
-    std::vector<hsize_t> dims;
-    if (H5Lexists(file, name, H5P_DEFAULT) <= 0) return dims;
-    H5Id dset(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
-    H5Id space(dset < 0 ? -1 : H5Dget_space(dset), H5Sclose);
-    const int n = space < 0 ? -1 : H5Sget_simple_extent_ndims(space);
-    if (n <= 0) return dims;
-    dims.resize((size_t)n);
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    return dims;
-  };
-  const auto read = [&](const char *name, size_t n, std::vector<PetscInt> &v) {
-    v.assign(n, 0);
-    H5Id dset(H5Dopen2(file, name, H5P_DEFAULT), H5Dclose);
-    H5Id fspace(dset < 0 ? -1 : H5Dget_space(dset), H5Sclose);
-    const hsize_t off = 0, cnt = n;
-    H5Id mspace(H5Screate_simple(1, &cnt, nullptr), H5Sclose);
-    return fspace >= 0 && mspace >= 0 && (n == 0 || H5Sselect_hyperslab(fspace, H5S_SELECT_SET, &off, nullptr, &cnt, nullptr) >= 0) && (n == 0 || H5Dread(dset, pint, mspace, fspace, H5P_DEFAULT, v.data()) >= 0);
-  };
-  std::vector<PetscInt> v;
-  if (shape("joint") != std::vector<hsize_t>{ids.size()} || !read("joint", ids.size(), v) || v != ids) return not_it + "its joints are not the model's";
-  for (const Dataset &d : StepDatasets()) {
-    const std::vector<hsize_t> dims = shape(d.name);
-    if (dims.empty() || dims[0] < (hsize_t)k || (d.width > 0 && dims[1] != ids.size())) return not_it + "its dataset " + d.name + " does not hold " + std::to_string(k) + " steps of " + std::to_string(ids.size()) + " joints";
+  FieldSpace            rows;
+  std::vector<PetscInt> ids;
+  PetscFunctionBeginUser;
+  PetscCall(SetUpRows(a, &rows));
+  PetscCall(RowIds(a, rows, &ids));
+  std::string mine;
+  try {
+    mine = CheckRows(path, k, rows, ids);
+  } catch (const std::exception &e) {
+    mine = std::string("Cannot restart: ") + e.what();
   }
-  if (!read("step", (size_t)k, v)) return not_it + "its steps cannot be read";
-  for (PetscInt s = 0; s < k; ++s)
-    if (v[(size_t)s] != s + 1) return not_it + "its row " + std::to_string(s) + " is step " + std::to_string(v[(size_t)s]) + ", not " + std::to_string(s + 1);
-  return "";
+  PetscCall(FieldSpaceDestroy(rows));
+  // The lowest complaining rank's reason, on every rank.
+  PetscMPIInt first = mine.empty() ? a->size : a->rank, len;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, a->comm));
+  why->clear();
+  if (first == a->size) PetscFunctionReturn(0);
+  len = (PetscMPIInt)mine.size();
+  PetscCallMPI(MPI_Bcast(&len, 1, MPI_INT, first, a->comm));
+  mine.resize((size_t)len);
+  PetscCallMPI(MPI_Bcast(mine.data(), len, MPI_CHAR, first, a->comm));
+  *why = mine;
+  PetscFunctionReturn(0);
 }
 
 PetscErrorCode JointTableReopen(BoltnetAssembly a, const std::string &path, PetscInt k, JointTable *t)
@@ -234,7 +272,7 @@ PetscErrorCode JointTableReopen(BoltnetAssembly a, const std::string &path, Pets
   hid_t file;
   PetscFunctionBeginUser;
   t->path = path;
-  PetscCall(SetUpRows(a, SortedIds(a), t));
+  PetscCall(SetUpRows(a, &t->rows));
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   PetscCall(PetscViewerHDF5Open(a->comm, path.c_str(), FILE_MODE_APPEND, &t->viewer));
   PetscCall(PetscViewerHDF5GetFileId(t->viewer, &file));

@@ -37,9 +37,10 @@ struct JointTable {
 // Collective: a new joints.h5 at path with the joint ids, the state names and the column attributes,
 // no step yet.
 PetscErrorCode JointTableCreate(BoltnetAssembly a, const std::string &scene, const std::string &path, JointTable *t);
-// One process (a restart's rank 0, before anything is changed): "" when the table at path can be
-// continued after step k (it holds the model's joints and steps 1..k, perhaps more), else why not.
-std::string JointTableCheck(BoltnetAssembly a, const std::string &path, PetscInt k);
+// Collective (a restart, before anything is changed): why, on every rank, is "" when the table at
+// path can be continued after step k (it holds the model's joints and steps 1..k, perhaps more),
+// else why not. Each rank reads the ids of its own rows.
+PetscErrorCode JointTableCheck(BoltnetAssembly a, const std::string &path, PetscInt k, std::string *why);
 // Collective, after JointTableCheck: the table reopened and cut after step k.
 PetscErrorCode JointTableReopen(BoltnetAssembly a, const std::string &path, PetscInt k, JointTable *t);
 // Collective: the step's rows (records of the joints this rank owns, in JointSet order), appended.

@@ -135,7 +135,7 @@ PetscErrorCode OutputOpen(MPI_Comm comm, const std::string &dir, const std::stri
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
-  out->files    = JointFilesFor(joints, a->layout.joints.size());
+  out->files    = JointFilesFor(joints, (size_t)a->layout.njoints);
   out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
@@ -276,7 +276,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
     j << "{\n  \"scene\": " << JsonString(out->scene);
     if (!out->load_case.empty()) j << ",\n  \"load_case\": " << JsonString(out->load_case);
     j << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
-      << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.joints.size() << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->net.ncondensed > 0 ? "true" : "false") << ",\n  \"condensed_patches\": " << a->net.ncondensed << ",\n  \"dof_imbalance\": " << JsonNumber(a->net.dof_imbalance) << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
+      << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.njoints << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->net.ncondensed > 0 ? "true" : "false") << ",\n  \"condensed_patches\": " << a->net.ncondensed << ",\n  \"dof_imbalance\": " << JsonNumber(a->net.dof_imbalance) << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
       << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))
       << ",\n  \"steps\": " << a->steps.size() << ",\n  \"final_load\": " << JsonNumber(a->lambda) << ",\n  \"cutbacks\": " << a->total_cutbacks << ",\n  \"newton_iterations\": [";
     for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].newton_its;

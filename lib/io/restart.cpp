@@ -51,7 +51,7 @@ PetscErrorCode CheckIdentity(BoltnetAssembly a, const CheckpointIdentity &id, co
     PetscCheck(s.ranks == a->size, a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) was written on %" PetscInt_FMT " rank(s), this run has %d, and the network is laid out differently on them (%" PetscInt_FMT " patches then, %zu now): -patch_max_nodes -1 (automatic) cuts the parts by the number of ranks. Restart on %" PetscInt_FMT " rank(s); a run that may move to another number of ranks needs an explicit -patch_max_nodes", file, s.ranks, a->size, s.npatches, a->layout.patches.size(), s.ranks);
     SETERRQ(a->comm, PETSC_ERR_USER_INPUT, "The checkpoint %s (-restart) belongs to a network laid out differently (%" PetscInt_FMT " patches then, %zu now)", file, s.npatches, a->layout.patches.size());
   }
-  PetscCheck(s.ndof == a->net.ndof_global && s.njoints == (PetscInt)a->layout.joints.size() && s.nsteps >= 1 && s.nsteps <= limits::kMaxLoadSteps, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: %" PetscInt_FMT " dof, %" PetscInt_FMT " joints and %" PetscInt_FMT " steps, for a network of %" PetscInt_FMT " dof and %zu joints", file, s.ndof, s.njoints, s.nsteps, a->net.ndof_global, a->layout.joints.size());
+  PetscCheck(s.ndof == a->net.ndof_global && s.njoints == a->layout.njoints && s.nsteps >= 1 && s.nsteps <= limits::kMaxLoadSteps, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: %" PetscInt_FMT " dof, %" PetscInt_FMT " joints and %" PetscInt_FMT " steps, for a network of %" PetscInt_FMT " dof and %" PetscInt_FMT " joints", file, s.ndof, s.njoints, s.nsteps, a->net.ndof_global, a->layout.njoints);
   PetscFunctionReturn(0);
 }
 

@@ -155,14 +155,15 @@ std::string TrimFields(const std::string &path, PetscInt k)
   return ok ? "" : RebuildFields(path, k);
 }
 
-// Rank 0: everything checked, then changed; "" or why not.
-std::string Resume(BoltnetAssembly a, Output *out)
+// Rank 0: everything checked, then changed; "" or why not. table: JointTableCheck's verdict on
+// joints.h5 (collective, made before).
+std::string Resume(BoltnetAssembly a, Output *out, const std::string &table)
 {
   const PetscInt    k    = (PetscInt)a->steps.size();
   const std::string csv  = out->dir + "/joints.csv";
   std::uintmax_t    keep = 0;
-  std::string       why  = out->files.csv ? JointsLength(csv, k, a->layout.joints.size(), &keep) : "";
-  if (why.empty() && out->files.hdf5) why = JointTableCheck(a, out->dir + "/joints.h5", k);
+  std::string       why  = out->files.csv ? JointsLength(csv, k, (size_t)a->layout.njoints, &keep) : "";
+  if (why.empty()) why = table;
   if (!why.empty()) return why;
   ErrorLog log;
   if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
@@ -219,15 +220,17 @@ PetscErrorCode OutputResume(MPI_Comm comm, const std::string &dir, const std::st
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   out->dir      = dir;
   out->scene    = scene;
-  out->files    = JointFilesFor(joints, a->layout.joints.size());
+  out->files    = JointFilesFor(joints, (size_t)a->layout.njoints);
   out->fields   = (fields.fields && !a->layout.shells.empty()) ? PETSC_TRUE : PETSC_FALSE;
   out->ff.dir   = dir;
   out->ff.scene = scene;
   out->ff.opt   = fields;
   out->ff.bypass_csv = out->files.csv; // a model large enough for joints.h5 has its bypass in fields.h5 only
+  std::string table;
+  if (out->files.hdf5) PetscCall(JointTableCheck(a, dir + "/joints.h5", (PetscInt)a->steps.size(), &table));
   if (rank == 0) {
     try {
-      why = Resume(a, out);
+      why = Resume(a, out, table);
     } catch (const std::exception &e) {
       why = std::string("Cannot restart: ") + e.what();
     }

@@ -157,7 +157,8 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
 // those its joints attach to (a joint's attachment point is read from both sides' meshes), and the
 // seams it owns. Of every other shell patch only its record stays (which part, whether condensed):
 // code that asks whether a patch is a shell finds it. The whole meshes of the cut parts and the
-// model's joint descriptions go too, so that past the set-up no rank holds the whole model
+// model's joint descriptions and the layout's joint components (each rank's own are its network
+// edges' components) go too, so that past the set-up no rank holds the whole model
 // (docs/performance.md, "Memory per rank").
 PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
 {
@@ -183,6 +184,8 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
     if (!mine.count((PetscInt)s)) std::vector<Seam::Element>().swap(a->layout.seams[s].elems);
   a->layout.cut_parts.clear();
   std::vector<JointDesc>().swap(a->model.joints); // laid out: the network's joint components hold them
+  std::vector<JointComp>().swap(a->layout.joints); // each rank's own are its edges' components
+  PetscCall(PetscInfo(nullptr, "Kept the components of %zu of %" PetscInt_FMT " joints on this rank past the set-up\n", a->joints.size(), a->layout.njoints));
   PetscFunctionReturn(0);
 }
 

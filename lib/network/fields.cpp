@@ -139,7 +139,7 @@ PetscErrorCode FieldMapCreate(BoltnetAssembly a, FieldMap *m)
   PetscInt tri = 0;
   for (const FieldElement &e : m->elements) tri += e.nn == 3;
   PetscCall(MPIU_Allreduce(&tri, &m->ntriangles, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCheck(m->nodes.nglobal == noff && m->elems.nglobal == eoff && m->joints.nglobal == (PetscInt)a->layout.joints.size(), comm, PETSC_ERR_PLIB, "The output numbering does not cover the model once");
+  PetscCheck(m->nodes.nglobal == noff && m->elems.nglobal == eoff && m->joints.nglobal == a->layout.njoints, comm, PETSC_ERR_PLIB, "The output numbering does not cover the model once");
   // The other patches' nodes of the shared elements this rank writes, from the natural vectors.
   m->ghosts.assign(ghosts.begin(), ghosts.end());
   for (size_t g = 0; g < m->ghosts.size(); ++g) m->ghost_index[m->ghosts[g]] = (PetscInt)g;

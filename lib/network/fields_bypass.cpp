@@ -5,13 +5,16 @@
 //   n_avg = (n_incoming + n_bypass) / 2  =>  n_bypass = sign(n_avg) (|n_avg| - P_bearing / (2 w)),
 // n_avg the area-weighted mean of d.N.d over the elements of the sheet whose centroid lies within
 // w / 2 of the fastener axis (the footprint's rigid elements left out). P_bypass = n_bypass w.
-// Elements and joints may sit on different ranks: each rank adds its elements' sums into a Vec laid
-// out by joint, scattered to the ranks that own the joints.
+// Elements and joints may sit on different ranks: each rank owns its joints only (network/build.cpp),
+// so it sends each joint side to the ranks whose elements of that part come near it (NearbySides);
+// each rank adds its elements' sums into a Vec laid out by joint, scattered to the joints' owners.
 #include "core/guard.hpp"
 #include "network/fields.hpp"
 #include "network/internal.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 namespace boltnet {
@@ -19,13 +22,79 @@ namespace {
 
 constexpr int kSums = 8; // area * N (xx yy zz xy yz xz, global), area, element count
 
-// A joint side on a shell part: its slot, fastener position and axis.
+// A joint side on a shell part: its part, slot, fastener position and axis. Plain data: it travels
+// between ranks as bytes.
 struct Side {
-  PetscInt               slot, pos, node; // pos: the patch (layout position), node: the joint node there
+  PetscInt               part, slot, pos, node; // pos: the patch (layout position), node: the joint node there
   std::array<double, 3> x, n;
 };
 
 double Dot(const std::array<double, 3> &a, const std::array<double, 3> &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+std::array<double, 3> Centroid(const FieldElement &e)
+{
+  std::array<double, 3> c{0, 0, 0};
+  for (int i = 0; i < e.nn; ++i)
+    for (int d = 0; d < 3; ++d) c[d] += e.geom.X[i][d] / e.nn;
+  return c;
+}
+
+// Collective: the sides of every joint whose region may hold a centroid of this rank's elements.
+// Each rank's box around its elements' centroids, by part, is gathered (a few per rank); each rank
+// sends each side of its own joints to the ranks whose box of that part, grown by the largest
+// distance of a region's centroid from its fastener (margin), holds the fastener.
+PetscErrorCode NearbySides(BoltnetAssembly a, const FieldMap &m, double margin, std::vector<Side> *sides)
+{
+  constexpr int kBox = 7; // part, low corner, high corner
+  MPI_Comm      comm = a->comm;
+  PetscFunctionBeginUser;
+  std::map<PetscInt, std::array<double, 6>> box;
+  for (const FieldElement &e : m.elements) {
+    const std::array<double, 3> c = Centroid(e);
+    auto [it, fresh]              = box.try_emplace(e.part, std::array<double, 6>{c[0], c[1], c[2], c[0], c[1], c[2]});
+    for (int d = 0; d < 3 && !fresh; ++d) it->second[d] = std::min(it->second[d], c[d]), it->second[3 + d] = std::max(it->second[3 + d], c[d]);
+  }
+  std::vector<double> mine;
+  for (const auto &[part, b] : box) {
+    mine.push_back((double)part);
+    mine.insert(mine.end(), b.begin(), b.end());
+  }
+  std::vector<PetscMPIInt> count(a->size), displ(a->size + 1, 0);
+  const PetscMPIInt        n = (PetscMPIInt)mine.size();
+  PetscCallMPI(MPI_Allgather(&n, 1, MPI_INT, count.data(), 1, MPI_INT, comm));
+  for (PetscMPIInt r = 0; r < a->size; ++r) displ[r + 1] = displ[r] + count[r];
+  std::vector<double> all(displ[a->size]);
+  PetscCallMPI(MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), count.data(), displ.data(), MPI_DOUBLE, comm));
+  std::multimap<PetscInt, std::pair<PetscMPIInt, const double *>> boxes; // by part: (rank, corners)
+  for (PetscMPIInt r = 0; r < a->size; ++r)
+    for (PetscMPIInt i = displ[r]; i < displ[r + 1]; i += kBox) boxes.insert({(PetscInt)all[i], {r, &all[i + 1]}});
+
+  std::vector<std::vector<Side>> out(a->size);
+  for (const JointComp &j : a->joints.comp)
+    for (int s = 0; s < 2; ++s) {
+      const PetscInt pos = s ? j.vb : j.va;
+      if (!a->layout.shells.count(pos)) continue;
+      const Side sd{s ? j.patch_b : j.patch_a, 2 * j.index + s, pos, s ? j.pnode_b : j.pnode_a, {j.x[0], j.x[1], j.x[2]}, {j.R[0], j.R[1], j.R[2]}};
+      auto [lo, hi] = boxes.equal_range(sd.part);
+      for (auto it = lo; it != hi; ++it) {
+        const double *b    = it->second.second;
+        bool          near = true;
+        for (int d = 0; d < 3; ++d) near = near && sd.x[d] >= b[d] - margin && sd.x[d] <= b[3 + d] + margin;
+        if (near) out[it->second.first].push_back(sd);
+      }
+    }
+  std::vector<PetscMPIInt> scount(a->size), sdispl(a->size + 1, 0), rcount(a->size), rdispl(a->size + 1, 0);
+  std::vector<Side>        send;
+  for (PetscMPIInt r = 0; r < a->size; ++r) {
+    scount[r] = (PetscMPIInt)(out[r].size() * sizeof(Side));
+    send.insert(send.end(), out[r].begin(), out[r].end());
+  }
+  PetscCallMPI(MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm));
+  for (PetscMPIInt r = 0; r < a->size; ++r) sdispl[r + 1] = sdispl[r] + scount[r], rdispl[r + 1] = rdispl[r] + rcount[r];
+  sides->resize(rdispl[a->size] / sizeof(Side));
+  PetscCallMPI(MPI_Alltoallv(send.data(), scount.data(), sdispl.data(), MPI_BYTE, sides->data(), rcount.data(), rdispl.data(), MPI_BYTE, comm));
+  PetscFunctionReturn(0);
+}
 
 } // namespace
 
@@ -40,24 +109,18 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
   using Key = std::array<long long, 3>;
   auto key  = [h](const std::array<double, 3> &x) { return Key{(long long)std::floor(x[0] / h), (long long)std::floor(x[1] / h), (long long)std::floor(x[2] / h)}; };
   auto hash = [](const Key &k) { return std::hash<long long>()(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL); };
+  std::vector<Side> near;
+  // A region's centroid is within reach along the axis and width / 2 across it: within this of x.
+  PetscCall(NearbySides(a, m, 1.000001 * std::sqrt(reach * reach + width * width / 4), &near));
   std::map<PetscInt, std::unordered_map<Key, std::vector<Side>, decltype(hash)>> sides;
-  for (const JointComp &j : a->layout.joints)
-    for (int s = 0; s < 2; ++s) {
-      const PetscInt pos = s ? j.vb : j.va;
-      if (!a->layout.shells.count(pos)) continue;
-      Side sd{2 * j.index + s, pos, s ? j.pnode_b : j.pnode_a, {j.x[0], j.x[1], j.x[2]}, {j.R[0], j.R[1], j.R[2]}};
-      auto &b = sides.try_emplace(s ? j.patch_b : j.patch_a, 16, hash).first->second;
-      b[key(sd.x)].push_back(sd);
-    }
+  for (const Side &sd : near) sides.try_emplace(sd.part, 16, hash).first->second[key(sd.x)].push_back(sd);
   for (size_t k = 0; k < m.elements.size(); ++k) {
     const FieldElement &e  = m.elements[k];
     const PetscInt      pos = a->patches.owned[e.owned].index;
     auto                it  = sides.find(e.part);
     if (it == sides.end()) continue;
-    std::array<double, 3> c{0, 0, 0};
-    for (int i = 0; i < e.nn; ++i)
-      for (int d = 0; d < 3; ++d) c[d] += e.geom.X[i][d] / e.nn;
-    const Key k0 = key(c);
+    const std::array<double, 3> c  = Centroid(e);
+    const Key                   k0 = key(c);
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
         for (long long dz = -1; dz <= 1; ++dz) {

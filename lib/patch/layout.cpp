@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <numeric>
 #include <set>
 
 namespace boltnet {
@@ -545,6 +546,13 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     }
     L->joints.push_back(j);
   }
+  { // the output tables' rows: the joints by increasing id (LayoutCreate refused an id given twice)
+    std::vector<PetscInt> order(L->joints.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](PetscInt l, PetscInt r) { return L->joints[l].id < L->joints[r].id; });
+    for (size_t r = 0; r < order.size(); ++r) L->joints[order[r]].row = (PetscInt)r;
+  }
+  L->njoints = (PetscInt)L->joints.size();
   Carry(L, o);
   PetscCall(ShareLayout(comm, stubs, L));
   PetscFunctionReturn(0);

@@ -25,7 +25,8 @@ struct PatchComp {
 // Edge component of a joint. R holds the local frame rows (n, t1, t2).
 struct JointComp {
   PetscInt  id;               // user id
-  PetscInt  index;            // position in the layout's joints (0..njoints-1)
+  PetscInt  index;            // position in the model's joints (0..njoints-1)
+  PetscInt  row;              // position among the model's joints sorted by id: the output tables' row
   PetscInt  patch_a, patch_b; // user ids of the two parts
   PetscInt  va, vb;           // positions in the layout's patches of the two patches
   PetscReal x[3];             // position of the fastener (where shell patches attach it)
@@ -67,10 +68,12 @@ struct LayoutOptions {
 };
 
 // Each shell part is laid out by one rank, its holder: its joints attached, its cut, its ports. Every
-// rank knows every patch's record, every seam's ends and every joint's component; the whole patches
-// and seams (meshes, elements, footprints) are on their part's holder only, and `shells` holds a
-// stub (part id, section, condensed; no mesh) for each of the others, until the network sends each
-// rank the patches and seams it needs (network/build.cpp).
+// rank knows every patch's record, every seam's ends and, during the set-up, every joint's
+// component; the whole patches and seams (meshes, elements, footprints) are on their part's holder
+// only, and `shells` holds a stub (part id, section, condensed; no mesh) for each of the others, until
+// the network sends each rank the patches and seams it needs (network/build.cpp). Once the network
+// is distributed `joints` is emptied (each rank's own are the network's edges) and only `njoints`
+// stays.
 struct Layout {
   std::vector<PatchComp>         patches;
   std::vector<PetscInt>          part_of;   // position in the model's parts of each patch
@@ -78,7 +81,8 @@ struct Layout {
   std::vector<PetscInt>          nodes;     // every node of each patch (mesh and joint nodes; 1 if rigid)
   std::map<PetscInt, ShellPatch> shells;    // the shell patches, by position in patches
   std::vector<Seam>              seams;     // every seam's ends and section; its elements on its holder
-  std::vector<JointComp>         joints;    // in the model's order
+  std::vector<JointComp>         joints;    // in the model's order; empty past the set-up
+  PetscInt                       njoints = 0; // joints in the model
   std::map<PetscInt, ShellMesh>  cut_parts; // the whole meshes of the parts that were cut, by user id
   PetscInt                       nparts = 0;
   PetscInt                       mesh_nodes = 0;   // mesh nodes over every shell part
