@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <numeric>
@@ -317,9 +318,11 @@ std::vector<PetscMPIInt> AssignParts(const Model &m, PetscMPIInt size)
 }
 
 // What the holders of the parts found, given to every rank: each patch's record (the nodes its
-// vertex carries, all its nodes, whether condensed), each seam's ends, each joint's attachment on
-// shell parts; a stub (part, section, condensed) for every shell patch held elsewhere; the
-// fingerprint. Each value has one writer (the holder of its part), so sums gather them.
+// vertex carries, all its nodes, whether condensed), each seam's ends, a stub (part, section,
+// condensed) for every shell patch held elsewhere, the fingerprint. Each joint's attachment on shell
+// parts goes to rank 0 alone, which lays out the network's graph (network/build.cpp): the other
+// ranks drop the joints' components here and receive their own from DMNetworkDistribute. Each value
+// has one writer (the holder of its part), so sums gather them.
 PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &stubs, Layout *L)
 {
   PetscFunctionBeginUser;
@@ -356,8 +359,10 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, px.data(), (PetscMPIInt)px.size(), MPIU_REAL, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, digest.data(), (PetscMPIInt)digest.size(), MPI_UINT64_T, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, si.data(), (PetscMPIInt)si.size(), MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, ji.data(), (PetscMPIInt)ji.size(), MPIU_INT, MPI_SUM, comm));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, jx.data(), (PetscMPIInt)jx.size(), MPIU_REAL, MPI_SUM, comm));
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : ji.data(), ji.data(), (PetscMPIInt)ji.size(), MPIU_INT, MPI_SUM, 0, comm));
+  PetscCallMPI(MPI_Reduce(rank == 0 ? MPI_IN_PLACE : jx.data(), jx.data(), (PetscMPIInt)jx.size(), MPIU_REAL, MPI_SUM, 0, comm));
 
   L->nodes.assign(np, 1);
   L->ncondensed = L->njoint_nodes = 0;
@@ -380,34 +385,46 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
     const ShellPatch &stub = stubs.at(L->part_of[sm.va]);
     sm.material = stub.material, sm.drill = stub.drill;
   }
-  for (PetscInt j = 0; j < nj; ++j)
-    for (int side = 0; side < 2; ++side) {
-      const PetscInt *q = &ji[6 * j + 3 * side];
-      if (q[0] == 0) continue;
-      JointComp &c = L->joints[j];
-      (side ? c.vb : c.va)           = q[0] - 1;
-      (side ? c.pnode_b : c.pnode_a) = q[1];
-      (side ? c.node_b : c.node_a)   = q[2];
-      for (int k = 0; k < 3; ++k) (side ? c.db : c.da)[k] = jx[6 * j + 3 * side + k];
-    }
-  for (const JointComp &c : L->joints) PetscCheck(c.va >= 0 && c.vb >= 0, comm, PETSC_ERR_PLIB, "Joint %" PetscInt_FMT " was not attached on every side", c.id);
+  PetscInt unattached = -1; // the first joint not attached on both sides (rank 0's count)
+  if (rank == 0) {
+    for (PetscInt j = 0; j < nj; ++j)
+      for (int side = 0; side < 2; ++side) {
+        const PetscInt *q = &ji[6 * j + 3 * side];
+        if (q[0] == 0) continue;
+        JointComp &c = L->joints[j];
+        (side ? c.vb : c.va)           = q[0] - 1;
+        (side ? c.pnode_b : c.pnode_a) = q[1];
+        (side ? c.node_b : c.node_a)   = q[2];
+        for (int k = 0; k < 3; ++k) (side ? c.db : c.da)[k] = jx[6 * j + 3 * side + k];
+      }
+    for (const JointComp &c : L->joints)
+      if (unattached < 0 && (c.va < 0 || c.vb < 0)) unattached = c.id;
+  }
+  PetscCallMPI(MPI_Bcast(&unattached, 1, MPIU_INT, 0, comm));
+  PetscCheck(unattached < 0, comm, PETSC_ERR_PLIB, "Joint %" PetscInt_FMT " was not attached on every side", unattached);
 
-  // The fingerprint: the patches in order with the nodes they carry, the joints with their patches.
-  Hasher h;
-  h.Add((std::uint64_t)np);
-  for (PetscInt p = 0; p < np; ++p) {
-    h.Add(L->patches[p].id);
-    h.Add(L->patches[p].kind);
-    h.Add(L->patches[p].nnodes);
-    h.Add(digest[p]);
-  }
-  h.Add((std::uint64_t)nj);
-  for (const JointComp &c : L->joints) {
-    h.Add(c.id);
-    h.Add(c.va);
-    h.Add(c.vb);
-  }
-  L->fingerprint = h.Hex();
+  // The fingerprint (rank 0's, given to all): the patches in order with the nodes they carry, the
+  // joints with their patches.
+  char hex[64] = {0};
+  if (rank == 0) {
+    Hasher h;
+    h.Add((std::uint64_t)np);
+    for (PetscInt p = 0; p < np; ++p) {
+      h.Add(L->patches[p].id);
+      h.Add(L->patches[p].kind);
+      h.Add(L->patches[p].nnodes);
+      h.Add(digest[p]);
+    }
+    h.Add((std::uint64_t)nj);
+    for (const JointComp &c : L->joints) {
+      h.Add(c.id);
+      h.Add(c.va);
+      h.Add(c.vb);
+    }
+    std::strncpy(hex, h.Hex().c_str(), sizeof hex - 1);
+  } else std::vector<JointComp>().swap(L->joints); // partly filled: this rank's come from the network
+  PetscCallMPI(MPI_Bcast(hex, (PetscMPIInt)sizeof hex, MPI_CHAR, 0, comm));
+  L->fingerprint = hex;
   PetscFunctionReturn(0);
 }
 

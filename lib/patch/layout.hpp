@@ -68,12 +68,12 @@ struct LayoutOptions {
 };
 
 // Each shell part is laid out by one rank, its holder: its joints attached, its cut, its ports. Every
-// rank knows every patch's record, every seam's ends and, during the set-up, every joint's
-// component; the whole patches and seams (meshes, elements, footprints) are on their part's holder
-// only, and `shells` holds a stub (part id, section, condensed; no mesh) for each of the others, until
-// the network sends each rank the patches and seams it needs (network/build.cpp). Once the network
-// is distributed `joints` is emptied (each rank's own are the network's edges) and only `njoints`
-// stays.
+// rank knows every patch's record and every seam's ends; rank 0 alone holds every joint's component
+// (`joints`, empty on the other ranks), to lay out the network's graph. The whole patches and seams
+// (meshes, elements, footprints) are on their part's holder only, and `shells` holds a stub (part
+// id, section, condensed; no mesh) for each of the others, until the network sends each rank the
+// patches and seams it needs (network/build.cpp). Once the network is distributed rank 0 empties
+// `joints` too (each rank's own are its network edges' components); `njoints` stays.
 struct Layout {
   std::vector<PatchComp>         patches;
   std::vector<PetscInt>          part_of;   // position in the model's parts of each patch
@@ -81,7 +81,7 @@ struct Layout {
   std::vector<PetscInt>          nodes;     // every node of each patch (mesh and joint nodes; 1 if rigid)
   std::map<PetscInt, ShellPatch> shells;    // the shell patches, by position in patches
   std::vector<Seam>              seams;     // every seam's ends and section; its elements on its holder
-  std::vector<JointComp>         joints;    // in the model's order; empty past the set-up
+  std::vector<JointComp>         joints;    // in the model's order, on rank 0 during the set-up
   PetscInt                       njoints = 0; // joints in the model
   std::map<PetscInt, ShellMesh>  cut_parts; // the whole meshes of the parts that were cut, by user id
   PetscInt                       nparts = 0;
