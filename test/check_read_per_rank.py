@@ -8,12 +8,18 @@ Runs COMMAND (an mpirun of the driver with -info) and reads each rank's lines
 
   [r] LayoutCreate(): Read and laid out K of P shell parts (n of N mesh nodes) on this rank
   [r] ReleaseUnowned(): Kept the components of j of J joints on this rank past the set-up
+  [r] SceneDescribeAssemblyImpl(): Read the fastener table's J rows on this rank
+  [r] ShareJoints(): Attaching a of J joints (s joint sides) on this rank's shell parts
 
 The reference is the scene's own tables, read here: P must be the patches table's number of shell
 rows (plate or gmsh), N the nodes of those parts (a plate's (nx + 1) (ny + 1); a Gmsh part's nodes,
-counted in its file by its physical surface's elements), J the joints table's rows. Over the ranks
-the K must add up to P, the n to N and the j to J (every part read once, every joint kept once), and
-with several ranks no rank may read every part or keep every joint.
+counted in its file by its physical surface's elements), J the joints table's rows, S their sides on
+shell parts (a joint between two shell parts has two, one to a rigid part one). Over the ranks the K
+must add up to P, the n to N, the j to J and the s to S (every part read once, every joint kept once,
+every side attached once), and with several ranks no rank may read every part or keep every joint.
+Only rank 0 may read the fastener table, and each joint with a side on a shell part is sent to the
+holders of its parts only: once or twice, so that the ranks are sent between JS (the joints with a
+side on a shell part) and S joints in all.
 """
 import csv
 import os
@@ -76,12 +82,20 @@ def scene_parts(scene):
     return parts, nodes
 
 
-def scene_joints(scene):
-    """The rows of the scene's joints table."""
+def table_rows(scene, key):
+    """The rows of the scene's table named by `key` (patches, joints)."""
     text = open(scene).read()
-    m = re.search(r"^\s*joints:\s*(\S+)", text, re.M)
+    m = re.search(r"^\s*" + key + r":\s*(\S+)", text, re.M)
     table = os.path.join(os.path.dirname(scene), m.group(1))
-    return sum(1 for _ in csv.DictReader(line for line in open(table) if not line.startswith("#")))
+    return list(csv.DictReader(line for line in open(table) if not line.startswith("#")))
+
+
+def scene_joints(scene):
+    """The rows of the scene's joints table, and their sides on shell parts."""
+    shells = {int(r["id"]) for r in table_rows(scene, "patches") if r["kind"].strip() in ("plate", "gmsh")}
+    rows = table_rows(scene, "joints")
+    sides = [(int(r["patch_a"]) in shells) + (int(r["patch_b"]) in shells) for r in rows]
+    return len(rows), sum(sides), sum(1 for n in sides if n)
 
 
 def main():
@@ -93,7 +107,9 @@ def main():
         sys.exit(f"the run exited {out.returncode}")
     pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read and laid out (\d+) of (\d+) shell parts \((\d+) of (\d+) mesh nodes\)")
     kept_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Kept the components of (\d+) of (\d+) joints on this rank past the set-up")
-    seen, kept = {}, {}
+    table_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read the fastener table's (\d+) rows on this rank")
+    sent_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Attaching (\d+) of (\d+) joints \((\d+) joint sides\) on this rank's shell parts")
+    seen, kept, table, sent = {}, {}, {}, {}
     for line in out.stdout.splitlines():
         g = pat.match(line)
         if g:
@@ -101,8 +117,14 @@ def main():
         g = kept_pat.match(line)
         if g:
             kept[int(g.group(1))] = (int(g.group(2)), int(g.group(3)))
+        g = table_pat.match(line)
+        if g:
+            table[int(g.group(1))] = int(g.group(2))
+        g = sent_pat.match(line)
+        if g:
+            sent[int(g.group(1))] = tuple(int(x) for x in g.groups()[1:])
     P, N = scene_parts(scene)
-    J = scene_joints(scene)
+    J, S, JS = scene_joints(scene)
     bad = []
     if sorted(seen) != list(range(ranks)):
         bad.append(f"lines from ranks {sorted(seen)}, expected 0..{ranks - 1}")
@@ -126,6 +148,19 @@ def main():
             bad.append(f"rank {r} kept every joint")
     if sum(v[0] for v in kept.values()) != J:
         bad.append(f"the ranks kept {sum(v[0] for v in kept.values())} joints in all, the scene has {J}")
+    if table != {0: J}:
+        bad.append(f"the fastener table was read as {table} (rank: rows), expected {{0: {J}}}: by rank 0 alone")
+    if sorted(sent) != list(range(ranks)):
+        bad.append(f"joint sharing lines from ranks {sorted(sent)}, expected 0..{ranks - 1}")
+    for r, (a, tot, s) in sorted(sent.items()):
+        print(f"rank {r}: sent {a} of {tot} joints, {s} joint sides on its parts")
+        if tot != J:
+            bad.append(f"rank {r} was told of {tot} joints; the scene has {J}")
+    if sum(v[2] for v in sent.values()) != S:
+        bad.append(f"the ranks attached {sum(v[2] for v in sent.values())} joint sides in all, the scene has {S} on shell parts")
+    total_sent = sum(v[0] for v in sent.values())
+    if not JS <= total_sent <= S:
+        bad.append(f"the ranks were sent {total_sent} joints in all; each of the {JS} joints with a side on a shell part goes to its parts' holders, one or two ranks, at most {S}")
     if bad:
         sys.exit("FAIL: " + "; ".join(bad))
     print(f"every one of the {P} shell parts ({N} nodes) read by one rank of {ranks}, each of its {J} joints kept by one")

@@ -96,3 +96,21 @@ foreach(target table gmsh scene nastran)
   add_test(NAME fuzz_regressions_${target} COMMAND fuzz_replay_${target} ${_inputs})
   set_tests_properties(fuzz_regressions_${target} PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" PASS_REGULAR_EXPRESSION "replay: [1-9][0-9]* input\\(s\\) ran without a crash")
 endforeach()
+
+# The fastener table is read and checked by rank 0 alone (io/scene.cpp, patch/layout.cpp): an error
+# in it, or in what only the whole joint list shows (an id given twice, a joint naming no patch),
+# must still stop every rank with the one message, on 1 and 3 ranks (ranks 1 and 2 hold no joint
+# until the layout sends them theirs, so a rank left waiting would hang the test until its timeout).
+set(_run3 ${BOLTNET_MPIRUN} 3 --oversubscribe $<TARGET_FILE:boltnet_driver> -output_dir ${BOLTNET_OUT}/bad)
+foreach(case "bad;bad.joints.csv line 2, column 'patch_b': 'one' is not a whole number"
+             "unknown-patch;Joint 0 names patch 7 which does not exist"
+             "twice;Joint id 0 is given twice"
+             "type-case;type-case.joints.csv line 2: joint type 'Bolt' must be lower-case letters and digits")
+  list(GET case 0 _table)
+  list(GET case 1 _message)
+  boltnet_expect(rank0_table_${_table} 1 ${_bad} ${_one} --match "${_message}"
+    -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/bad -scene_joints ${BOLTNET_TEST_SCENES}/${_table}.joints.csv)
+  boltnet_expect(rank0_table_${_table} 3 ${_bad} --match "${_message}"
+    -- ${_run3} -scene ${BOLTNET_SCENES}/fig3c.yaml -scene_joints ${BOLTNET_TEST_SCENES}/${_table}.joints.csv)
+  set_tests_properties(rank0_table_${_table}_np3 PROPERTIES TIMEOUT 120)
+endforeach()

@@ -19,6 +19,11 @@
 
    Units are the caller's; the shipped scenes use N, mm, MPa. Dof order per node: ux uy uz rx ry rz.
 
+   Patches and boundary conditions are described alike on every rank. The joints are rank 0's: the
+   set-up sends each rank those that attach to the shell parts it lays out, so the other ranks may
+   pass the same joints (they are dropped) or none (a fastener table read on rank 0 alone, as the
+   scene reader does). Either way rank 0's list is the model's.
+
    Errors (docs/architecture.md, "Errors"): every function checks its arguments before it allocates
    (a NULL pointer, a negative id, a count out of range: a PETSc error naming the function and the
    argument) and returns a C++ exception inside boltnet as a PETSc error (PETSC_ERR_MEM for

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <map>
+#include <cstring>
 #include <sstream>
 
 namespace boltnet {
@@ -162,6 +163,12 @@ PetscErrorCode CheckpointIdentify(BoltnetAssembly a, const std::string &scene, C
     id->bcs    = bcs.Hex();
     return PetscErrorCode(0);
   }));
+  { // the joints are rank 0's (a scene's fastener table is read there alone: io/scene.cpp)
+    char hex[64] = {0};
+    std::strncpy(hex, id->joints.c_str(), sizeof hex - 1);
+    PetscCallMPI(MPI_Bcast(hex, (PetscMPIInt)sizeof hex, MPI_CHAR, 0, a->comm));
+    id->joints = hex;
+  }
   PetscCall(PetscFree(all));
   PetscFunctionReturn(0);
 }

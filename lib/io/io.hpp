@@ -125,8 +125,8 @@ void OutputDiscard(Output *out);
 // the temporary file is removed and the message (file and reason) returned; "" on success.
 std::string WriteFileWhole(const std::string &path, const std::string &text);
 
-// Read a whole text file on rank 0 and broadcast it; a missing or unreadable file is an error
-// naming `what` and the path.
-PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text);
+// Read a whole text file on rank 0 and broadcast it (or, with broadcast false, keep it on rank 0
+// alone); a missing or unreadable file is an error naming `what` and the path, on every rank.
+PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text, bool broadcast = true);
 
 } // namespace boltnet

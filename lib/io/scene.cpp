@@ -21,6 +21,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 namespace boltnet {
 namespace {
@@ -270,7 +271,71 @@ PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::strin
   return Guard(comm, [&] { return JointTypeFromOptions(comm, a, type, fj, p, scene); });
 }
 
-PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text)
+namespace {
+
+// A row of the fastener table, checked; type is its position in the list of joint types.
+struct FastenerRow {
+  PetscInt  id, pa, pb;
+  PetscReal n[3], t[3], pos[3];
+  bool      positioned;
+  size_t    type;
+};
+
+// The rows of the fastener table, and its joint types with the first joint of each, in the order of
+// first use.
+PetscErrorCode FastenerRows(MPI_Comm comm, const Table &joints, std::vector<FastenerRow> *rows, std::vector<std::pair<std::string, FirstJoint>> *firsts)
+{
+  std::map<std::string, size_t> seen;
+  PetscFunctionBeginUser;
+  for (size_t r = 0; r < joints.rows.size(); ++r) {
+    std::string type;
+    PetscCall(Cell(comm, joints, r, "type", &type));
+    PetscCheck(!type.empty() && type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") == std::string::npos, comm, PETSC_ERR_USER_INPUT, "%s line %d: joint type '%s' must be lower-case letters and digits (it names the options -joint_<type>_*)", joints.path.c_str(), joints.lines[r], type.c_str());
+    FastenerRow f{};
+    PetscCall(IdCell(comm, joints, r, "id", &f.id));
+    PetscCall(IdCell(comm, joints, r, "patch_a", &f.pa));
+    PetscCall(IdCell(comm, joints, r, "patch_b", &f.pb));
+    const char *nc[] = {"nx", "ny", "nz"}, *tc[] = {"t1x", "t1y", "t1z"}, *xc[] = {"x", "y", "z"};
+    f.positioned = HasColumn(joints, "x");
+    for (int k = 0; k < 3; ++k) {
+      PetscCall(RealCell(comm, joints, r, nc[k], &f.n[k]));
+      PetscCall(RealCell(comm, joints, r, tc[k], &f.t[k]));
+      if (f.positioned) PetscCall(RealCell(comm, joints, r, xc[k], &f.pos[k]));
+    }
+    auto it = seen.find(type);
+    if (it == seen.end()) {
+      it = seen.emplace(type, firsts->size()).first;
+      firsts->push_back({type, FirstJoint{f.id, f.pa, f.pb, {f.n[0], f.n[1], f.n[2]}, {f.t[0], f.t[1], f.t[2]}, {f.pos[0], f.pos[1], f.pos[2]}}});
+    }
+    f.type = it->second;
+    rows->push_back(f);
+  }
+  PetscFunctionReturn(0);
+}
+
+// Rank 0's joint types, with their first joints, given to every rank.
+PetscErrorCode BcastJointTypes(MPI_Comm comm, std::vector<std::pair<std::string, FirstJoint>> *firsts)
+{
+  static_assert(std::is_trivially_copyable<FirstJoint>::value, "a first joint travels as bytes");
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscInt n = (PetscInt)firsts->size();
+  PetscCallMPI(MPI_Bcast(&n, 1, MPIU_INT, 0, comm));
+  if (rank) firsts->resize((size_t)n);
+  for (auto &[type, first] : *firsts) {
+    PetscInt len = (PetscInt)type.size();
+    PetscCallMPI(MPI_Bcast(&len, 1, MPIU_INT, 0, comm));
+    type.resize((size_t)len);
+    PetscCallMPI(MPI_Bcast(type.data(), (PetscMPIInt)len, MPI_CHAR, 0, comm));
+    PetscCallMPI(MPI_Bcast(&first, (PetscMPIInt)sizeof first, MPI_BYTE, 0, comm));
+  }
+  PetscFunctionReturn(0);
+}
+
+} // namespace
+
+PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text, bool broadcast)
 {
   PetscMPIInt rank;
   long long   len = -1; // -1: cannot be read; -2: larger than limits::kMaxInputBytes
@@ -294,6 +359,7 @@ PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const 
   PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG_LONG, 0, comm));
   PetscCheck(len != -2, comm, PETSC_ERR_USER_INPUT, "The %s file '%s' is larger than %lld bytes (docs/scenes.md, \"Limits\")", what, path.c_str(), (long long)limits::kMaxInputBytes);
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot read the %s file '%s'", what, path.c_str());
+  if (!broadcast) PetscFunctionReturn(0); // the other ranks' text stays empty
   PetscCall(Input(comm, "reading the scene", [&] { text->resize((size_t)len); }));
   PetscCallMPI(MPI_Bcast(text->data(), (PetscMPIInt)len, MPI_CHAR, 0, comm));
   PetscFunctionReturn(0);
@@ -370,9 +436,15 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   std::string path = Resolve(*scene, "scene_patches", fp);
   PetscCall(ReadFileCollective(comm, path, "patch table (-scene_patches)", &text));
   PetscCall(ParseTable(comm, path, text, {"id", "kind", "x", "y", "z"}, &patches));
+  // The fastener table is read and parsed by rank 0 alone, which holds the model's joints until the
+  // layout sends each rank those of the parts it holds (patch/layout.cpp); the other ranks learn its
+  // joint types only (below). Its errors are raised on every rank (Collective).
+  PetscMPIInt rank;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
   path = Resolve(*scene, "scene_joints", fj);
-  PetscCall(ReadFileCollective(comm, path, "fastener table (-scene_joints)", &text));
-  PetscCall(ParseTable(comm, path, text, {"id", "patch_a", "patch_b", "type", "nx", "ny", "nz", "t1x", "t1y", "t1z"}, &joints));
+  PetscCall(ReadFileCollective(comm, path, "fastener table (-scene_joints)", &text, false));
+  PetscCall(Collective(comm, "reading the scene", [&] { return rank == 0 ? ParseTable(comm, path, text, {"id", "patch_a", "patch_b", "type", "nx", "ny", "nz", "t1x", "t1y", "t1z"}, &joints) : PetscErrorCode(0); }));
+  std::string().swap(text);
   path = Resolve(*scene, "scene_bcs", fb);
   PetscCall(ReadFileCollective(comm, path, "boundary condition table (-scene_bcs)", &text));
   PetscCall(ParseTable(comm, path, text, {"patch", "dof", "kind", "value"}, &bcs));
@@ -458,33 +530,26 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
       }, mat));
     }
   }
+  // The fastener table's rows, on rank 0; every joint type with its first joint, in the order of
+  // first use, on every rank: each rank reads the type's options (-options_left counts them on every
+  // rank), and identifying a type from its geometry may mesh a coupon like the patches around it.
+  std::vector<FastenerRow>                  rows;
+  std::vector<std::pair<std::string, FirstJoint>> firsts;
+  PetscCall(Collective(comm, "reading the scene", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    if (rank == 0) PetscCall(FastenerRows(comm, joints, &rows, &firsts));
+    PetscFunctionReturn(0);
+  }));
+  PetscCall(BcastJointTypes(comm, &firsts));
   std::map<std::string, BoltnetJointParams> types;
-  for (size_t r = 0; r < joints.rows.size(); ++r) {
-    std::string type;
-    PetscCall(Cell(comm, joints, r, "type", &type));
-    PetscCheck(!type.empty() && type.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") == std::string::npos, comm, PETSC_ERR_USER_INPUT, "%s line %d: joint type '%s' must be lower-case letters and digits (it names the options -joint_<type>_*)", joints.path.c_str(), joints.lines[r], type.c_str());
-    PetscInt  id, pa, pb;
-    PetscReal n[3], t[3];
-    PetscCall(IdCell(comm, joints, r, "id", &id));
-    PetscCall(IdCell(comm, joints, r, "patch_a", &pa));
-    PetscCall(IdCell(comm, joints, r, "patch_b", &pb));
-    const char *nc[] = {"nx", "ny", "nz"}, *tc[] = {"t1x", "t1y", "t1z"};
-    for (int k = 0; k < 3; ++k) {
-      PetscCall(RealCell(comm, joints, r, nc[k], &n[k]));
-      PetscCall(RealCell(comm, joints, r, tc[k], &t[k]));
-    }
-    PetscReal pos[3] = {0, 0, 0};
-    if (HasColumn(joints, "x")) {
-      PetscCall(RealCell(comm, joints, r, "x", &pos[0]));
-      PetscCall(RealCell(comm, joints, r, "y", &pos[1]));
-      PetscCall(RealCell(comm, joints, r, "z", &pos[2]));
-    }
-    if (!types.count(type)) {
-      const FirstJoint fj = {id, pa, pb, {n[0], n[1], n[2]}, {t[0], t[1], t[2]}, {pos[0], pos[1], pos[2]}};
-      PetscCall(JointTypeFromOptions(comm, a, type, fj, &types[type], scene));
-    }
-    PetscCall(BoltnetAssemblyAddJointAt(a, id, pa, pb, &types[type], n, t, HasColumn(joints, "x") ? pos : nullptr));
-  }
+  for (const auto &[type, first] : firsts) PetscCall(JointTypeFromOptions(comm, a, type, first, &types[type], scene));
+  PetscCall(Collective(comm, "reading the scene", [&]() -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    for (const FastenerRow &f : rows) PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &types.at(firsts[f.type].first), f.n, f.t, f.positioned ? f.pos : nullptr));
+    PetscFunctionReturn(0);
+  }));
+  if (rank == 0) PetscCall(PetscInfo(nullptr, "Read the fastener table's %zu rows on this rank\n", rows.size()));
+  std::vector<FastenerRow>().swap(rows);
   const std::map<std::string, PetscInt> dofs = {{"ux", 0}, {"uy", 1}, {"uz", 2}, {"rx", 3}, {"ry", 4}, {"rz", 5}, {"all", -1}};
   const std::map<std::string, BoltnetBCKind> kinds = {{"fixed", BOLTNET_BC_FIXED}, {"displacement", BOLTNET_BC_DISPLACEMENT}, {"force", BOLTNET_BC_FORCE}};
   for (size_t r = 0; r < bcs.rows.size(); ++r) {

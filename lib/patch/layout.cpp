@@ -7,18 +7,20 @@
 #include "mesh/search.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <memory>
 #include <numeric>
 #include <set>
+#include <type_traits>
 
 namespace boltnet {
 namespace {
 
-// The model's ids, references and supports (collective: every rank holds the same parts, joints and
-// conditions; the meshes are read later, each by one rank).
+// The model's ids, references and supports, on rank 0, which holds every joint (the other ranks hold
+// the same parts and conditions; the meshes are read later, each by one rank).
 PetscErrorCode CheckModel(MPI_Comm comm, const Model &m)
 {
   PetscFunctionBeginUser;
@@ -320,13 +322,14 @@ std::vector<PetscMPIInt> AssignParts(const Model &m, PetscMPIInt size)
 // What the holders of the parts found, given to every rank: each patch's record (the nodes its
 // vertex carries, all its nodes, whether condensed), each seam's ends, a stub (part, section,
 // condensed) for every shell patch held elsewhere, the fingerprint. Each joint's attachment on shell
-// parts goes to rank 0 alone, which lays out the network's graph (network/build.cpp): the other
-// ranks drop the joints' components here and receive their own from DMNetworkDistribute. Each value
+// parts goes to rank 0 alone, which lays out the network's graph (network/build.cpp) with `all`, its
+// components of every joint (their shell sides still to be filled): the other ranks drop the
+// components of their parts' joints here and receive their own from DMNetworkDistribute. Each value
 // has one writer (the holder of its part), so sums gather them.
-PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &stubs, Layout *L)
+PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &stubs, std::vector<JointComp> &&all, Layout *L)
 {
   PetscFunctionBeginUser;
-  const PetscInt np = (PetscInt)L->patches.size(), ns = (PetscInt)L->seams.size(), nj = (PetscInt)L->joints.size();
+  const PetscInt np = (PetscInt)L->patches.size(), ns = (PetscInt)L->seams.size(), nj = L->njoints;
   constexpr int  kP = 6; // id, kind, nodes carried, all nodes, condensed, joint nodes
   std::vector<PetscInt>      pi(kP * np, 0), si(3 * ns, 0), ji(6 * nj, 0);
   std::vector<PetscReal>     px(3 * np, 0), jx(6 * nj, 0);
@@ -346,15 +349,15 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
     if (sm.part < 0) continue; // held elsewhere
     si[3 * s] = sm.part, si[3 * s + 1] = sm.va, si[3 * s + 2] = sm.vb;
   }
-  for (PetscInt j = 0; j < nj; ++j)
+  for (const JointComp &c : L->joints) // this rank's parts' joints, at their place in the model
     for (int side = 0; side < 2; ++side) {
-      const JointComp &c = L->joints[j];
-      const PetscInt   v = side ? c.vb : c.va;
+      const PetscInt j = c.index, v = side ? c.vb : c.va;
       if (v < 0 || !L->shells.count(v)) continue; // held elsewhere, or a rigid part's (known to all)
       PetscInt *q = &ji[6 * j + 3 * side];
       q[0] = v + 1, q[1] = side ? c.pnode_b : c.pnode_a, q[2] = side ? c.node_b : c.node_a;
       for (int k = 0; k < 3; ++k) jx[6 * j + 3 * side + k] = side ? c.db[k] : c.da[k];
     }
+  std::vector<JointComp>().swap(L->joints); // rank 0's are `all`; the others' come from the network
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, pi.data(), (PetscMPIInt)pi.size(), MPIU_INT, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, px.data(), (PetscMPIInt)px.size(), MPIU_REAL, MPI_SUM, comm));
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, digest.data(), (PetscMPIInt)digest.size(), MPI_UINT64_T, MPI_SUM, comm));
@@ -387,6 +390,13 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
   }
   PetscInt unattached = -1; // the first joint not attached on both sides (rank 0's count)
   if (rank == 0) {
+    L->joints = std::move(all);
+    { // the output tables' rows: the joints by increasing id (CheckModel refused an id given twice)
+      std::vector<PetscInt> order(L->joints.size());
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), [&](PetscInt l, PetscInt r) { return L->joints[l].id < L->joints[r].id; });
+      for (size_t r = 0; r < order.size(); ++r) L->joints[order[r]].row = (PetscInt)r;
+    }
     for (PetscInt j = 0; j < nj; ++j)
       for (int side = 0; side < 2; ++side) {
         const PetscInt *q = &ji[6 * j + 3 * side];
@@ -422,10 +432,100 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
       h.Add(c.vb);
     }
     std::strncpy(hex, h.Hex().c_str(), sizeof hex - 1);
-  } else std::vector<JointComp>().swap(L->joints); // partly filled: this rank's come from the network
+  }
   PetscCallMPI(MPI_Bcast(hex, (PetscMPIInt)sizeof hex, MPI_CHAR, 0, comm));
   L->fingerprint = hex;
   PetscFunctionReturn(0);
+}
+
+// Rank 0 holds the model's joints (the scene's fastener table is read there alone, io/scene.cpp; a
+// linking code may give them on every rank, and the other ranks' copies are dropped here). Each
+// rank receives the joints that attach to the shell parts it holds (`holder`, AssignParts) with
+// their positions in the model (`index`); rank 0 keeps the whole list in `all`, to lay out the
+// network's graph. Every rank learns the number of joints.
+PetscErrorCode ShareJoints(MPI_Comm comm, const std::vector<PetscMPIInt> &holder, Model &m, std::vector<JointDesc> *all, std::vector<PetscInt> *index, PetscInt *njoint)
+{
+  static_assert(std::is_trivially_copyable<JointDesc>::value, "joint descriptions travel as bytes");
+  struct Sent {
+    PetscInt  index;
+    JointDesc d;
+  };
+  PetscMPIInt rank, size;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  std::vector<std::vector<Sent>> to(rank == 0 ? size : 0);
+  std::vector<int>               counts(size, 0), displs(size, 0);
+  std::vector<Sent>              packed;
+  if (rank == 0) {
+    *all = std::move(m.joints);
+    for (size_t ji = 0; ji < all->size(); ++ji) {
+      const JointDesc &d = (*all)[ji];
+      const PetscMPIInt ra = holder[m.Find(d.part_a)], rb = holder[m.Find(d.part_b)];
+      if (ra >= 0) to[ra].push_back(Sent{(PetscInt)ji, d});
+      if (rb >= 0 && rb != ra) to[rb].push_back(Sent{(PetscInt)ji, d});
+    }
+    bool fits = true; // one MPI message, counted in int bytes, carries them all
+    for (PetscMPIInt r = 0; r < size; ++r) {
+      const size_t end = (r ? (size_t)displs[r - 1] + counts[r - 1] : 0) + to[r].size() * sizeof(Sent);
+      fits             = fits && end <= (size_t)INT_MAX;
+      if (!fits) break;
+      counts[r] = (int)(to[r].size() * sizeof(Sent));
+      displs[r] = r ? displs[r - 1] + counts[r - 1] : 0;
+      packed.insert(packed.end(), to[r].begin(), to[r].end());
+    }
+    std::vector<std::vector<Sent>>().swap(to);
+    *njoint = fits ? (PetscInt)all->size() : -1;
+  } else std::vector<JointDesc>().swap(m.joints);
+  PetscCallMPI(MPI_Bcast(njoint, 1, MPIU_INT, 0, comm));
+  PetscCheck(*njoint >= 0, comm, PETSC_ERR_SUP, "The model's joints are more than one message can carry to the ranks (%d bytes)", INT_MAX);
+  int mine = 0;
+  PetscCallMPI(MPI_Scatter(counts.data(), 1, MPI_INT, &mine, 1, MPI_INT, 0, comm));
+  std::vector<Sent> got(mine / sizeof(Sent));
+  PetscCallMPI(MPI_Scatterv(packed.data(), counts.data(), displs.data(), MPI_BYTE, got.data(), mine, MPI_BYTE, 0, comm));
+  m.joints.clear();
+  index->clear();
+  for (const Sent &s : got) {
+    m.joints.push_back(s.d);
+    index->push_back(s.index);
+  }
+  std::int64_t sides = 0;
+  for (const JointDesc &d : m.joints) sides += (holder[m.Find(d.part_a)] == rank) + (holder[m.Find(d.part_b)] == rank);
+  PetscCall(PetscInfo(nullptr, "Attaching %zu of %" PetscInt_FMT " joints (%lld joint sides) on this rank's shell parts\n", m.joints.size(), *njoint, (long long)sides));
+  PetscFunctionReturn(0);
+}
+
+// The layout's component of joint d, at position ji in the model. A side on a rigid part is laid out
+// on every rank; with `jnode` (d's attachment node in each of its parts, AttachJoints) the sides on
+// the shell parts this rank holds are filled too, the others stay -1.
+JointComp MakeJointComp(const Model &m, const LayoutOptions &o, const JointDesc &d, PetscInt ji, const std::vector<std::vector<std::pair<PetscInt, int>>> &nodemap, const PetscInt *jnode, const Layout &L)
+{
+  JointComp j{};
+  j.id      = d.id;
+  j.index   = ji;
+  j.patch_a = d.part_a;
+  j.patch_b = d.part_b;
+  for (int k = 0; k < 3; ++k) j.x[k] = d.x[k];
+  for (int k = 0; k < 9; ++k) j.R[k] = d.R[k];
+  j.params = d.params;
+  j.va = j.vb = -1; // a side on a part another rank holds: filled in ShareLayout
+  for (int side = 0; side < 2; ++side) {
+    const PetscInt  pos  = m.Find(side ? d.part_b : d.part_a);
+    const PartDesc &part = m.parts[pos];
+    PetscReal      *off  = side ? j.db : j.da;
+    for (int k = 0; k < 3; ++k) off[k] = (part.kind == PatchKind::Rigid && d.positioned) ? d.x[k] - part.x[k] : 0.0;
+    if (nodemap[pos].empty() || (part.kind == PatchKind::Shell && !jnode)) continue;
+    const auto &[v, pn] = nodemap[pos][part.kind == PatchKind::Rigid ? 0 : jnode[side]];
+    (side ? j.vb : j.va)           = v;
+    (side ? j.pnode_b : j.pnode_a) = pn;
+    // A levered joint on a shell part with node coupling: the node carries x by a rigid lever,
+    // as a rigid patch's node does (with a footprint the joint node is at x already).
+    if (part.kind == PatchKind::Shell && d.lever && o.coupling == CouplingType::Node) {
+      const ShellPatch &sp = L.shells.at(v);
+      for (int k = 0; k < 3; ++k) off[k] = d.x[k] - sp.mesh.x[pn][k];
+    }
+  }
+  return j;
 }
 
 } // namespace
@@ -436,9 +536,14 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Comm_size(comm, &size));
-  PetscCall(CheckModel(comm, m));
+  PetscCall(Collective(comm, "checking the model", [&]() { return rank == 0 ? CheckModel(comm, m) : PetscErrorCode(0); }));
   const PetscInt                 npart  = (PetscInt)m.parts.size();
   const std::vector<PetscMPIInt> holder = AssignParts(m, size);
+  // From here m.joints is this rank's share, `all` rank 0's whole list (model/model.hpp).
+  std::vector<JointDesc> all;
+  std::vector<PetscInt>  jindex; // each joint of the share: its position in the model
+  PetscInt               njoint = 0;
+  PetscCall(ShareJoints(comm, holder, m, &all, &jindex, &njoint));
 
   // The shell parts this rank lays out, read (ShellPart::read) and checked, as patches before any
   // cut; of the others, what a stub needs.
@@ -534,44 +639,15 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
     for (auto &nm : nodemap[pos]) nm.first += first[pos];
   }
   cuts.clear();
-  for (size_t ji = 0; ji < m.joints.size(); ++ji) {
-    const JointDesc &d = m.joints[ji];
-    JointComp        j{};
-    j.id      = d.id;
-    j.index   = (PetscInt)ji;
-    j.patch_a = d.part_a;
-    j.patch_b = d.part_b;
-    for (int k = 0; k < 3; ++k) j.x[k] = d.x[k];
-    for (int k = 0; k < 9; ++k) j.R[k] = d.R[k];
-    j.params = d.params;
-    j.va = j.vb = -1; // a side on a part another rank holds: filled in below
-    for (int side = 0; side < 2; ++side) {
-      const PetscInt  pos  = m.Find(side ? d.part_b : d.part_a);
-      const PartDesc &part = m.parts[pos];
-      PetscReal      *off  = side ? j.db : j.da;
-      for (int k = 0; k < 3; ++k) off[k] = (part.kind == PatchKind::Rigid && d.positioned) ? d.x[k] - part.x[k] : 0.0;
-      if (nodemap[pos].empty()) continue;
-      auto &[v, pn] = nodemap[pos][jnode[2 * ji + side]];
-      (side ? j.vb : j.va)           = v;
-      (side ? j.pnode_b : j.pnode_a) = pn;
-      // A levered joint on a shell part with node coupling: the node carries x by a rigid lever,
-      // as a rigid patch's node does (with a footprint the joint node is at x already).
-      if (part.kind == PatchKind::Shell && d.lever && o.coupling == CouplingType::Node) {
-        const ShellPatch &sp = L->shells.at(v);
-        for (int k = 0; k < 3; ++k) off[k] = d.x[k] - sp.mesh.x[pn][k];
-      }
-    }
-    L->joints.push_back(j);
-  }
-  { // the output tables' rows: the joints by increasing id (LayoutCreate refused an id given twice)
-    std::vector<PetscInt> order(L->joints.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](PetscInt l, PetscInt r) { return L->joints[l].id < L->joints[r].id; });
-    for (size_t r = 0; r < order.size(); ++r) L->joints[order[r]].row = (PetscInt)r;
-  }
-  L->njoints = (PetscInt)L->joints.size();
+  // The components of this rank's parts' joints, attached on the sides it holds; rank 0 also makes
+  // one of every joint, whose shell sides ShareLayout fills from the holders' attachments.
+  for (size_t k = 0; k < m.joints.size(); ++k) L->joints.push_back(MakeJointComp(m, o, m.joints[k], jindex[k], nodemap, &jnode[2 * k], *L));
+  std::vector<JointComp> full;
+  for (size_t ji = 0; ji < all.size(); ++ji) full.push_back(MakeJointComp(m, o, all[ji], (PetscInt)ji, nodemap, nullptr, *L));
+  std::vector<JointDesc>().swap(all);
+  L->njoints = njoint;
   Carry(L, o);
-  PetscCall(ShareLayout(comm, stubs, L));
+  PetscCall(ShareLayout(comm, stubs, std::move(full), L));
   PetscFunctionReturn(0);
 }
 
