@@ -63,7 +63,7 @@ struct BCDesc {
 struct Model {
   std::vector<PartDesc>         parts;  // in the order described
   std::map<PetscInt, ShellPart> shells; // the shell parts, by position in parts
-  std::vector<JointDesc>        joints;
+  std::vector<JointDesc>        joints; // rank 0's are the model's (other ranks: a copy, or none)
   std::vector<BCDesc>           bcs;
   // Position in parts of the part with user id `id`, or -1.
   PetscInt Find(PetscInt id) const

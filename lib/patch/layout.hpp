@@ -95,8 +95,9 @@ struct Layout {
 };
 
 // Check the model and lay it out (collective). The shell parts' meshes move from the model: a
-// part's into the layout on its holder, the others' are dropped. Errors name the joint, part, node
-// or boundary condition at fault, on every rank.
+// part's into the layout on its holder, the others' are dropped. The joints are rank 0's (model.hpp):
+// on return model.joints holds, on each rank, those that attach to the shell parts it holds. Errors
+// name the joint, part, node or boundary condition at fault, on every rank.
 PetscErrorCode LayoutCreate(MPI_Comm comm, Model &model, const LayoutOptions &o, Layout *L);
 
 // The edge list of the network: the joints (their patches' positions), then the seams.
