@@ -300,8 +300,8 @@ PetscErrorCode FastenerRows(MPI_Comm comm, const Table &joints, std::vector<Fast
     for (int k = 0; k < 3; ++k) {
       PetscCall(RealCell(comm, joints, r, nc[k], &f.n[k]));
       PetscCall(RealCell(comm, joints, r, tc[k], &f.t[k]));
-      if (f.positioned) PetscCall(RealCell(comm, joints, r, xc[k], &f.pos[k]));
     }
+    for (int k = 0; k < 3 && f.positioned; ++k) PetscCall(RealCell(comm, joints, r, xc[k], &f.pos[k]));
     auto it = seen.find(type);
     if (it == seen.end()) {
       it = seen.emplace(type, firsts->size()).first;
@@ -533,7 +533,9 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   // The fastener table's rows, on rank 0; every joint type with its first joint, in the order of
   // first use, on every rank: each rank reads the type's options (-options_left counts them on every
   // rank), and identifying a type from its geometry may mesh a coupon like the patches around it.
-  std::vector<FastenerRow>                  rows;
+  // Every row is checked before any type's options are: a table with a bad cell and a bad type
+  // option reports the cell.
+  std::vector<FastenerRow>                        rows;
   std::vector<std::pair<std::string, FirstJoint>> firsts;
   PetscCall(Collective(comm, "reading the scene", [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
