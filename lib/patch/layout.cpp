@@ -465,13 +465,15 @@ PetscErrorCode ShareJoints(MPI_Comm comm, const std::vector<PetscMPIInt> &holder
       if (ra >= 0) to[ra].push_back(Sent{(PetscInt)ji, d});
       if (rb >= 0 && rb != ra) to[rb].push_back(Sent{(PetscInt)ji, d});
     }
-    bool fits = true; // one MPI message, counted in int bytes, carries them all
-    for (PetscMPIInt r = 0; r < size; ++r) {
-      const size_t end = (r ? (size_t)displs[r - 1] + counts[r - 1] : 0) + to[r].size() * sizeof(Sent);
-      fits             = fits && end <= (size_t)INT_MAX;
+    size_t end  = 0; // bytes packed so far: one MPI message, counted in int bytes, carries them all
+    bool   fits = true;
+    for (PetscMPIInt r = 0; r < size && fits; ++r) {
+      const size_t bytes = to[r].size() * sizeof(Sent);
+      fits               = end + bytes <= (size_t)INT_MAX;
       if (!fits) break;
-      counts[r] = (int)(to[r].size() * sizeof(Sent));
-      displs[r] = r ? displs[r - 1] + counts[r - 1] : 0;
+      counts[r] = (int)bytes;
+      displs[r] = (int)end;
+      end += bytes;
       packed.insert(packed.end(), to[r].begin(), to[r].end());
     }
     std::vector<std::vector<Sent>>().swap(to);
