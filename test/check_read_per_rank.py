@@ -7,6 +7,7 @@ that past the set-up each rank keeps the components of its own joints only (lib/
 Runs COMMAND (an mpirun of the driver with -info) and reads each rank's lines
 
   [r] LayoutCreate(): Read and laid out K of P shell parts (n of N mesh nodes) on this rank
+  [r] ReleaseUnowned(): Kept the meshes of m of M shell patches (k nodes) on this rank past the set-up
   [r] ReleaseUnowned(): Kept the components of j of J joints on this rank past the set-up
   [r] SceneDescribeAssemblyImpl(): Read the fastener table's J rows on this rank
   [r] ShareJoints(): Attaching a of J joints (s joint sides) on this rank's shell parts
@@ -17,6 +18,8 @@ counted in its file by its physical surface's elements), J the joints table's ro
 shell parts (a joint between two shell parts has two, one to a rigid part one). Over the ranks the K
 must add up to P, the n to N, the j to J and the s to S (every part read once, every joint kept once,
 every side attached once), and with several ranks no rank may read every part or keep every joint.
+Past the set-up each shell patch's mesh is kept by the one rank that owns it (its network vertex):
+the m add up to M, so that no rank holds a patch of another, even one its joints attach to.
 Only rank 0 may read the fastener table, and each joint with a side on a shell part is sent to the
 holders of its parts only: once or twice, so that the ranks are sent between JS (the joints with a
 side on a shell part) and S joints in all.
@@ -107,9 +110,10 @@ def main():
         sys.exit(f"the run exited {out.returncode}")
     pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read and laid out (\d+) of (\d+) shell parts \((\d+) of (\d+) mesh nodes\)")
     kept_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Kept the components of (\d+) of (\d+) joints on this rank past the set-up")
+    mesh_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Kept the meshes of (\d+) of (\d+) shell patches \((\d+) nodes\) on this rank past the set-up")
     table_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read the fastener table's (\d+) rows on this rank")
     sent_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Attaching (\d+) of (\d+) joints \((\d+) joint sides\) on this rank's shell parts")
-    seen, kept, table, sent = {}, {}, {}, {}
+    seen, kept, table, sent, meshes = {}, {}, {}, {}, {}
     for line in out.stdout.splitlines():
         g = pat.match(line)
         if g:
@@ -117,6 +121,9 @@ def main():
         g = kept_pat.match(line)
         if g:
             kept[int(g.group(1))] = (int(g.group(2)), int(g.group(3)))
+        g = mesh_pat.match(line)
+        if g:
+            meshes[int(g.group(1))] = (int(g.group(2)), int(g.group(3)))
         g = table_pat.match(line)
         if g:
             table[int(g.group(1))] = int(g.group(2))
@@ -148,6 +155,15 @@ def main():
             bad.append(f"rank {r} kept every joint")
     if sum(v[0] for v in kept.values()) != J:
         bad.append(f"the ranks kept {sum(v[0] for v in kept.values())} joints in all, the scene has {J}")
+    if sorted(meshes) != list(range(ranks)):
+        bad.append(f"patch mesh lines from ranks {sorted(meshes)}, expected 0..{ranks - 1}")
+    totals = {tot for m, tot in meshes.values()}
+    for r, (m, tot) in sorted(meshes.items()):
+        print(f"rank {r}: kept the meshes of {m} of {tot} shell patches")
+    if len(totals) != 1:
+        bad.append(f"the ranks count {sorted(totals)} shell patches, not one number")
+    elif sum(m for m, tot in meshes.values()) != next(iter(totals)):
+        bad.append(f"the ranks kept {sum(m for m, tot in meshes.values())} patch meshes in all, of {next(iter(totals))} patches: each must be kept by its owner alone")
     if table != {0: J}:
         bad.append(f"the fastener table was read as {table} (rank: rows), expected {{0: {J}}}: by rank 0 alone")
     if sorted(sent) != list(range(ranks)):

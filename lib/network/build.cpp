@@ -153,10 +153,9 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
-// Once the operators are built, what the rank keeps of the layout: the shell patches it owns and
-// those its joints attach to (a joint's attachment point is read from both sides' meshes), and the
-// seams it owns. Of every other shell patch only its record stays (which part, whether condensed):
-// code that asks whether a patch is a shell finds it. The whole meshes of the cut parts and the
+// Once the operators are built, what the rank keeps of the layout: the shell patches and the seams
+// it owns. Of every other shell patch only its record stays (which part, whether condensed): code
+// that asks whether a patch is a shell finds it. The whole meshes of the cut parts and the
 // model's joint descriptions and the layout's joint components (each rank's own are its network
 // edges' components) go too, so that past the set-up no rank holds the whole model
 // (docs/performance.md, "Memory per rank").
@@ -165,9 +164,13 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
   std::set<PetscInt> keep, mine;
   PetscFunctionBeginUser;
   for (const OwnedPatch &op : a->patches.owned) keep.insert(op.index);
-  for (const JointComp &j : a->joints.comp) keep.insert({j.va, j.vb});
+  std::size_t whole = 0, nodes = 0;
   for (auto &[pos, sp] : a->layout.shells) {
-    if (keep.count(pos)) continue;
+    if (keep.count(pos)) {
+      ++whole;
+      nodes += (std::size_t)sp.nnodes();
+      continue;
+    }
     ShellPatch stub;
     stub.id        = sp.id;
     stub.material  = sp.material;
@@ -185,6 +188,7 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
   a->layout.cut_parts.clear();
   std::vector<JointDesc>().swap(a->model.joints); // laid out: the network's joint components hold them
   std::vector<JointComp>().swap(a->layout.joints); // each rank's own are its edges' components
+  PetscCall(PetscInfo(nullptr, "Kept the meshes of %zu of %zu shell patches (%zu nodes) on this rank past the set-up\n", whole, a->layout.shells.size(), nodes));
   PetscCall(PetscInfo(nullptr, "Kept the components of %zu of %" PetscInt_FMT " joints on this rank past the set-up\n", a->joints.size(), a->layout.njoints));
   PetscFunctionReturn(0);
 }

@@ -30,13 +30,11 @@ PetscErrorCode AssemblyFetchLayout(BoltnetAssembly a)
   const PetscMPIInt   size = a->size, rank = a->rank;
   std::set<PetscInt>  patches, seams, cuts;
   PetscFunctionBeginUser;
-  // What this rank needs: the shell patches it owns and those its joints attach to, the seams it
-  // owns; with keep_layout, everything (the gathering writer reads every patch's mesh on rank 0).
+  // What this rank needs: the shell patches and the seams it owns; with keep_layout, everything (the
+  // gathering writer reads every patch's mesh on rank 0). A joint needs nothing of its patches'
+  // meshes past the layout: its component carries its attachment nodes and points.
   for (const OwnedPatch &op : a->patches.owned)
     if (op.shell) patches.insert(op.index);
-  for (const JointComp &j : a->joints.comp)
-    for (PetscInt v : {j.va, j.vb})
-      if (L.holder[v] >= 0) patches.insert(v);
   for (PetscInt e : a->net.sedges) {
     SeamComp sc;
     PetscCall(NetworkComponent(a->net.dm, e, nullptr, &sc, sizeof sc));

@@ -315,8 +315,8 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
     l.id      = j.id;
     l.state   = static_cast<PetscInt>(re.state);
     l.bearing = re.bearing ? 1 : 0;
-    l.xa      = JointAttachmentPoint(a, j, j.va, j.pnode_a);
-    l.xb      = JointAttachmentPoint(a, j, j.vb, j.pnode_b);
+    l.xa      = {j.pa[0], j.pa[1], j.pa[2]};
+    l.xb      = {j.pb[0], j.pb[1], j.pb[2]};
     std::copy(x + js.oa[k], x + js.oa[k] + 6, l.ua.begin());
     std::copy(x + js.ob[k], x + js.ob[k] + 6, l.ub.begin());
     std::copy(j.R, j.R + 9, l.R.begin());

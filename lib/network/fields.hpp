@@ -144,7 +144,5 @@ struct PartField {
 };
 // On rank 0: every shell part and every joint (sorted by id); empty elsewhere.
 PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &parts, std::vector<JointLine> &lines);
-// The reference attachment point of joint j on the patch at position pos (node: its node there).
-std::array<double, 3> JointAttachmentPoint(BoltnetAssembly a, const JointComp &j, PetscInt pos, PetscInt node);
 
 } // namespace boltnet

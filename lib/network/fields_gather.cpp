@@ -21,25 +21,6 @@ struct JointDof {
 
 } // namespace
 
-// The reference point of a joint's attachment to one side: a rigid patch's node; on a shell patch,
-// the point of the bolt axis at the mean axial position of the footprint nodes (the mid-surface).
-std::array<double, 3> JointAttachmentPoint(BoltnetAssembly a, const JointComp &j, PetscInt pos, PetscInt node)
-{
-  auto sh = a->layout.shells.find(pos);
-  if (sh == a->layout.shells.end()) { // a rigid patch: its node, or where the joint acts on it
-    const PetscReal *d = pos == j.va ? j.da : j.db;
-    return {a->layout.patches[pos].x[0] + d[0], a->layout.patches[pos].x[1] + d[1], a->layout.patches[pos].x[2] + d[2]};
-  }
-  const ShellMesh &m = sh->second.mesh;
-  if (node < (PetscInt)m.x.size()) return m.x[node]; // attached to a mesh node (-coupling_type node)
-  const ShellPatch::JointNode &jn = sh->second.joint_nodes.at(node - (PetscInt)m.x.size());
-  double                       s  = 0;
-  for (int k : jn.footprint)
-    for (int d = 0; d < 3; ++d) s += j.R[d] * (m.x[k][d] - j.x[d]);
-  if (!jn.footprint.empty()) s /= (double)jn.footprint.size();
-  return {j.x[0] + s * j.R[0], j.x[1] + s * j.R[1], j.x[2] + s * j.R[2]};
-}
-
 PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &parts, std::vector<JointLine> &lines)
 {
   std::vector<double>      mine, all; // per owned shell patch: index, size, its dof
@@ -101,8 +82,8 @@ PetscErrorCode AssemblyGatherFields(BoltnetAssembly a, std::vector<PartField> &p
     const JointComp &j = a->layout.joints.at(d.index);
     JointLine        l;
     l.id = j.id;
-    l.xa = JointAttachmentPoint(a, j, j.va, j.pnode_a);
-    l.xb = JointAttachmentPoint(a, j, j.vb, j.pnode_b);
+    l.xa = {j.pa[0], j.pa[1], j.pa[2]};
+    l.xb = {j.pb[0], j.pb[1], j.pb[2]};
     std::copy(d.ua, d.ua + 6, l.ua.begin());
     std::copy(d.ub, d.ub + 6, l.ub.begin());
     std::copy(j.R, j.R + 9, l.R.begin());

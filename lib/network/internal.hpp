@@ -10,8 +10,8 @@ namespace boltnet {
 // doubles in place is undefined behaviour, a copy is not.
 PetscErrorCode NetworkComponent(DM dm, PetscInt p, PetscInt *key, void *out, size_t bytes);
 
-// The whole shell patches and seams this rank needs (its own, those its joints attach to; all with
-// keep_layout), from the ranks that laid them out (collective; network/fetch.cpp).
+// The whole shell patches and seams this rank owns (all of them with keep_layout), from the ranks
+// that laid them out (collective; network/fetch.cpp).
 PetscErrorCode AssemblyFetchLayout(BoltnetAssembly a);
 // The Jacobian, preallocated exactly (network/jacobian.cpp).
 PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a);

@@ -319,6 +319,21 @@ std::vector<PetscMPIInt> AssignParts(const Model &m, PetscMPIInt size)
   return holder;
 }
 
+// The reference point of joint j's attachment to shell patch sp at its node pnode (JointComp::pa):
+// the mesh node itself (-coupling_type node), or the point of the bolt axis at the mean axial
+// position of the footprint nodes, which is the mid-surface of the sheet the fastener crosses.
+std::array<double, 3> ShellAttachmentPoint(const ShellPatch &sp, const JointComp &j, PetscInt pnode)
+{
+  const ShellMesh &m = sp.mesh;
+  if (pnode < (PetscInt)m.x.size()) return m.x[pnode];
+  const ShellPatch::JointNode &jn = sp.joint_nodes.at(pnode - (PetscInt)m.x.size());
+  double                       s  = 0;
+  for (int k : jn.footprint)
+    for (int d = 0; d < 3; ++d) s += j.R[d] * (m.x[k][d] - j.x[d]);
+  if (!jn.footprint.empty()) s /= (double)jn.footprint.size();
+  return {j.x[0] + s * j.R[0], j.x[1] + s * j.R[1], j.x[2] + s * j.R[2]};
+}
+
 // What the holders of the parts found, given to every rank: each patch's record (the nodes its
 // vertex carries, all its nodes, whether condensed), each seam's ends, a stub (part, section,
 // condensed) for every shell patch held elsewhere, the fingerprint. Each joint's attachment on shell
@@ -332,7 +347,7 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
   const PetscInt np = (PetscInt)L->patches.size(), ns = (PetscInt)L->seams.size(), nj = L->njoints;
   constexpr int  kP = 6; // id, kind, nodes carried, all nodes, condensed, joint nodes
   std::vector<PetscInt>      pi(kP * np, 0), si(3 * ns, 0), ji(6 * nj, 0);
-  std::vector<PetscReal>     px(3 * np, 0), jx(6 * nj, 0);
+  std::vector<PetscReal>     px(3 * np, 0), jx(12 * nj, 0); // per joint side: d, attachment point
   std::vector<std::uint64_t> digest(np, 0);
   for (const auto &[pos, sp] : L->shells) {
     PetscInt *q = &pi[kP * pos];
@@ -355,7 +370,11 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
       if (v < 0 || !L->shells.count(v)) continue; // held elsewhere, or a rigid part's (known to all)
       PetscInt *q = &ji[6 * j + 3 * side];
       q[0] = v + 1, q[1] = side ? c.pnode_b : c.pnode_a, q[2] = side ? c.node_b : c.node_a;
-      for (int k = 0; k < 3; ++k) jx[6 * j + 3 * side + k] = side ? c.db[k] : c.da[k];
+      const std::array<double, 3> at = ShellAttachmentPoint(L->shells.at(v), c, q[1]);
+      for (int k = 0; k < 3; ++k) {
+        jx[12 * j + 6 * side + k]     = side ? c.db[k] : c.da[k];
+        jx[12 * j + 6 * side + 3 + k] = at[k];
+      }
     }
   std::vector<JointComp>().swap(L->joints); // rank 0's are `all`; the others' come from the network
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, pi.data(), (PetscMPIInt)pi.size(), MPIU_INT, MPI_SUM, comm));
@@ -405,7 +424,16 @@ PetscErrorCode ShareLayout(MPI_Comm comm, const std::map<PetscInt, ShellPatch> &
         (side ? c.vb : c.va)           = q[0] - 1;
         (side ? c.pnode_b : c.pnode_a) = q[1];
         (side ? c.node_b : c.node_a)   = q[2];
-        for (int k = 0; k < 3; ++k) (side ? c.db : c.da)[k] = jx[6 * j + 3 * side + k];
+        for (int k = 0; k < 3; ++k) {
+          (side ? c.db : c.da)[k] = jx[12 * j + 6 * side + k];
+          (side ? c.pb : c.pa)[k] = jx[12 * j + 6 * side + 3 + k];
+        }
+      }
+    for (JointComp &c : L->joints) // the sides on rigid patches, laid out everywhere
+      for (int side = 0; side < 2; ++side) {
+        const PetscInt v = side ? c.vb : c.va;
+        if (v < 0 || L->holder[v] >= 0) continue;
+        for (int k = 0; k < 3; ++k) (side ? c.pb : c.pa)[k] = L->patches[v].x[k] + (side ? c.db : c.da)[k];
       }
     for (const JointComp &c : L->joints)
       if (unattached < 0 && (c.va < 0 || c.vb < 0)) unattached = c.id;

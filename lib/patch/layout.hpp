@@ -36,6 +36,11 @@ struct JointComp {
   // node's, zero for a joint given no position): the attachment point follows the node as a rigid
   // body, u + theta x d (docs/joint-laws.md, "Where a joint acts").
   PetscReal da[3], db[3];
+  // The reference point of each side's attachment, for output: a rigid patch's node plus d; on a
+  // shell patch, the point of the bolt axis at the mean axial position of the footprint nodes (the
+  // mid-surface), or the mesh node itself (-coupling_type node). Found by the holder of the patch
+  // at the layout, so that no other rank needs the patch's mesh.
+  PetscReal pa[3], pb[3];
   PetscReal R[9];
   Params    params;
 };
