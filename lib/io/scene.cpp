@@ -437,7 +437,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscCall(ReadFileCollective(comm, path, "patch table (-scene_patches)", &text));
   PetscCall(ParseTable(comm, path, text, {"id", "kind", "x", "y", "z"}, &patches));
   // The fastener table is read and parsed by rank 0 alone, which holds the model's joints until the
-  // layout sends each rank those of the parts it holds (patch/layout.cpp); the other ranks learn its
+  // layout sends each rank those of the parts it holds (patch/share.cpp); the other ranks learn its
   // joint types only (below). Its errors are raised on every rank (Collective).
   PetscMPIInt rank;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));

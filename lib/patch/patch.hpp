@@ -116,7 +116,7 @@ struct PatchOperator {
 //            The rows of v hold T^T K T (the exact reduced stiffness, no slave column), each slave
 //            row holds c (u_s - T_s u_m) = 0 with c the mean translational diagonal of K, so that
 //            the slave dof stay in the vector with their true displacement. A node in two
-//            footprints must have been given to one joint before (patch/layout.cpp).
+//            footprints must have been given to one joint before (patch/attach.cpp).
 //   node:    K alone (the joints attach to mesh nodes).
 // K includes the patch's whole elements and its share of the shared ones.
 // Throws std::invalid_argument (from the element) on degenerate elements.
