@@ -225,7 +225,7 @@ PetscErrorCode CheckpointWrite(BoltnetAssembly a, const CheckpointIdentity &id, 
   s.ntargets = a->path.ntargets, s.target = a->path.target, s.halved = a->path.halved, s.start = a->path.start, s.sub = a->path.sub;
   s.cutbacks = a->total_cutbacks, s.jac_assembled = a->joints.jac_assembled, s.jac_reused = a->joints.jac_reused;
   s.frozen_joint_steps = a->joints.frozen_joint_steps, s.joint_steps = a->joints.joint_steps, s.released = a->joints.released;
-  s.load = a->lambda, s.force_scale_seen = a->force_scale_seen, s.last_increment = a->joints.last_increment;
+  s.load = a->lambda, s.force_scale_seen = a->checks.force_scale_seen, s.last_increment = a->joints.last_increment;
   s.has_prev = a->has_prev ? 1 : 0, s.prev_load = a->has_prev ? a->lambda_prev : 0;
   // The most loaded joint so far is rank 0's (OutputStep); every rank writes the same attributes.
   PetscInt  mi[2] = {out.most_joint, out.most_step};

@@ -163,7 +163,7 @@ PetscErrorCode Apply(BoltnetAssembly a, const Saved &s, Vec x, Vec j, Vec st, Ve
   PetscCheck(!bad && !a->steps.empty() && a->steps.back().load == s.load, a->comm, PETSC_ERR_FILE_UNEXPECTED, "The checkpoint %s (-restart) is damaged: its steps are not numbered 1 to %" PetscInt_FMT " or do not end at its load factor", file, s.nsteps);
 
   a->lambda = a->lambda_target = s.load;
-  a->force_scale_seen          = s.force_scale_seen;
+  a->checks.force_scale_seen          = s.force_scale_seen;
   a->total_cutbacks            = s.cutbacks;
   js.last_increment            = s.last_increment;
   a->has_prev                  = s.has_prev ? PETSC_TRUE : PETSC_FALSE;

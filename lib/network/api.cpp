@@ -39,8 +39,8 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   if (!a || !*a) PetscFunctionReturn(0);
   PetscCall(SNESDestroy(&(*a)->snes));
   PetscCall(MatDestroy(&(*a)->J));
-  PetscCall(MatDestroy(&(*a)->Jlast));
-  PetscCall(AbsMultDestroy(&(*a)->roundoff));
+  PetscCall(MatDestroy(&(*a)->checks.Jlast));
+  PetscCall(AbsMultDestroy(&(*a)->checks.roundoff));
   PetscCall(MatDestroy(&(*a)->Jbase));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(VecDestroy(&(*a)->Xprev));

@@ -9,7 +9,9 @@
 //            their ports (patch/condense.hpp)
 //   joints   the joints this rank owns and their history (joint/jointset.hpp)
 //   bc       the boundary rows of the network's vectors (network/boundary.cpp)
-// and the solver state (SNES, Jacobian, solution, load factor, the record of the steps).
+// and the solver state: SNES, Jacobian, solution and load factor; isolve, the interface solve's
+// choice and factorisation, and checks, what a converged step must satisfy (solver/interface.hpp);
+// the record of the steps.
 #pragma once
 
 #include "boltnet.h"
@@ -20,7 +22,7 @@
 #include "patch/condense.hpp"
 #include "patch/layout.hpp"
 #include "shell/shell.hpp"
-#include "solver/roundoff.hpp"
+#include "solver/interface.hpp"
 
 #include <functional>
 #include <map>
@@ -160,50 +162,9 @@ struct _p_BoltnetAssembly {
   Vec       Xprev       = nullptr;
   PetscReal lambda_prev = 0;
   PetscBool has_prev    = PETSC_FALSE;
-  PetscBool user_atol = PETSC_FALSE; // -snes_atol given: keep it
-  PetscBool user_force = PETSC_FALSE; // -snes_force_iteration given
-  PetscInt  user_max_fail = 1;        // -snes_max_fail
   Mat       Jbase     = nullptr;     // the linear part of J (patches, seams), copied in before the joints
-  // The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
-  // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian,
-  // kept in the PC and refactored when the Krylov solve takes more than refactor_its iterations or
-  // fails). solve_auto: not chosen yet; MUMPS's first analysis of J decides (lagged where it
-  // estimates at least lagged_flops_per_entry flops per entry of the factors, in core).
-  PetscBool lagged                 = PETSC_FALSE;
-  PetscBool solve_auto             = PETSC_TRUE;
-  PetscBool lagged_ksp             = PETSC_FALSE; // the KSP is set up for the lagged solve
-  PetscBool lagged_auto            = PETSC_FALSE; // lagged by auto's choice: direct again if the factors go to disk
-  PetscReal lagged_flops_per_entry = 1000;
-  PetscInt  refactor_its           = 25;
-  PetscBool factors_valid          = PETSC_FALSE; // the PC's factors are of a Jacobian of this analysis
-  // The direct solve's modified Newton (docs/solver.md, "Keeping the factorisation"): the Jacobian
-  // of an earlier iterate of the same solve, and its factors, are kept while the residual falls by
-  // at least this factor per iteration and no joint changes state (0: refactor at every iteration).
-  PetscReal keep_ratio   = 0.1;
-  PetscInt  keep_it      = -1;   // iteration of the last Jacobian call in this solve
-  PetscReal keep_fnorm   = 0;    // the residual norm there
-  PetscInt  kept         = 0;    // Jacobians kept by this rule, for summary.json
-  // Factors on disk (MUMPS ICNTL(22) = 1) when MUMPS's analysis estimates more memory than a node
-  // has (memory_mb, 0: what the operating system says is available), or when a factorisation runs
-  // out of memory: -interface_out_of_core; factors_on_disk once that happened, or once a
-  // factorisation ran with the user's own -mat_mumps_icntl_22 1 (solver/equilibrium.cpp). That
-  // option, given either way, decides alone (storage_given): boltnet neither chooses nor retries.
-  PetscBool out_of_core     = PETSC_TRUE;
-  PetscBool storage_given   = PETSC_FALSE;
-  PetscReal memory_mb       = 0;
-  PetscBool factors_on_disk = PETSC_FALSE;
-  PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
-  PetscReal jnorm     = 0;           // ||J||_inf of the last Jacobian
-  // The last Jacobian assembled (referenced), whose |J| |x| is the round-off of each row of K u,
-  // and what that product keeps between calls (solver/roundoff.hpp).
-  Mat     Jlast = nullptr;
-  boltnet::AbsMult roundoff;
-  // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md): a converged step must balance
-  // to this fraction of its force scale; MUMPS pivots below null_pivot_threshold ||A|| are null.
-  PetscReal   equilibrium_rtol     = 1e-6;
-  PetscReal   null_pivot_threshold = 1e-12;
-  std::string singular; // the mechanism found by the last factorisation with null pivots ("" if none)
-  PetscReal   force_scale_seen = 0; // the largest force scale of the converged steps so far
+  boltnet::InterfaceSolve    isolve; // the interface solve's choice and factorisation (solver/interface.hpp)
+  boltnet::ConvergenceChecks checks; // what a converged step must satisfy, and the last Jacobian's round-off
   PetscReal lambda_target = 0; // load factor of the step being solved
   PetscReal lambda        = 0; // load factor of the last converged step
 
@@ -301,7 +262,7 @@ PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a);
 // Back to the direct solve (a KSP that applies the factorisation, refactored whenever J changes),
 // where the automatic choice had taken the lagged one and the factors then had to go to disk.
 PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a);
-// After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->singular
+// After a factorisation: the number of null pivots (INFOG(28)); when there are some, a->checks.singular
 // names the mechanism (patches, dof, joints) from a null vector of the Jacobian.
 PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull);
 // After a failed linear solve: why MUMPS could not factor the Jacobian when a smaller load step

@@ -18,12 +18,12 @@ PetscErrorCode AssemblyReset(BoltnetAssembly a)
   a->steps.clear();
   a->total_cutbacks   = 0;
   a->failure.clear();
-  a->singular.clear();
-  a->force_scale_seen = 0;
+  a->checks.singular.clear();
+  a->checks.force_scale_seen = 0;
   a->has_prev         = PETSC_FALSE; // no secant predictor from the last case's path
-  a->factorisations = a->krylov_its = a->linear_solves = a->kept = 0;
-  a->keep_it = -1;
-  a->factors_valid = PETSC_FALSE;
+  a->isolve.factorisations = a->isolve.krylov_its = a->isolve.linear_solves = a->isolve.kept = 0;
+  a->isolve.keep_it = -1;
+  a->isolve.factors_valid = PETSC_FALSE;
   JointSet &js  = a->joints;
   js.committed.assign(js.size(), History{}); // every joint back to its initial history
   js.accepted.clear();

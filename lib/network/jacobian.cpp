@@ -234,10 +234,10 @@ PetscErrorCode AssemblyLaggedFactorisation(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   PetscCall(KSPGetConvergedReason(ksp, &reason));
   PetscCall(KSPGetIterationNumber(ksp, &its));
-  if (!a->factors_valid || reason < 0 || its > a->refactor_its) {
+  if (!a->isolve.factors_valid || reason < 0 || its > a->isolve.refactor_its) {
     PetscCall(SNESSetLagPreconditioner(a->snes, -2));
-    a->factors_valid = PETSC_TRUE;
-    ++a->factorisations;
+    a->isolve.factors_valid = PETSC_TRUE;
+    ++a->isolve.factorisations;
   } else PetscCall(SNESSetLagPreconditioner(a->snes, -1));
   PetscFunctionReturn(0);
 }
@@ -262,13 +262,13 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscReal fnorm;
   PetscCall(SNESGetIterationNumber(snes, &it));
   PetscCall(SNESGetFunctionNorm(snes, &fnorm));
-  const PetscReal ratio = it > 0 && it == a->keep_it + 1 && a->keep_fnorm > 0 ? fnorm / a->keep_fnorm : PETSC_MAX_REAL;
-  const bool      fast  = a->keep_ratio > 0 && ratio <= a->keep_ratio;
-  a->keep_it = it, a->keep_fnorm = fnorm;
+  const PetscReal ratio = it > 0 && it == a->isolve.keep_it + 1 && a->isolve.keep_fnorm > 0 ? fnorm / a->isolve.keep_fnorm : PETSC_MAX_REAL;
+  const bool      fast  = a->isolve.keep_ratio > 0 && ratio <= a->isolve.keep_ratio;
+  a->isolve.keep_it = it, a->isolve.keep_fnorm = fnorm;
   // Linear where it can be: the patches and seams are linear, so when no joint's tangent differs
   // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
   // object state, and PCSetUp then keeps the factorisation too.
-  if (a->lagged && !a->lagged_ksp) PetscCall(AssemblyUseLaggedKSP(a)); // chosen by MUMPS's first analysis
+  if (a->isolve.lagged && !a->isolve.lagged_ksp) PetscCall(AssemblyUseLaggedKSP(a)); // chosen by MUMPS's first analysis
   if (a->opt.stuck_linear && J == a->J && P == J && js.jac_valid) {
     // Counted over all joints, for -info: how far the Jacobian is from the last one (a low-rank
     // update of a kept factorisation pays only when few joints change: docs/performance.md).
@@ -283,7 +283,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
       // same factorisations below as the run that was not interrupted.
       js.jac_state.resize(resp.size());
       for (size_t k = 0; k < resp.size(); ++k) js.jac_state[k] = StateCode(resp[k]);
-      if (a->lagged) PetscCall(AssemblyLaggedFactorisation(a));
+      if (a->isolve.lagged) PetscCall(AssemblyLaggedFactorisation(a));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
       PetscFunctionReturn(0);
     }
@@ -292,12 +292,12 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // last iteration reduced the residual by keep_ratio and no joint changed state since J was
   // assembled. Only the bearing joints' contact directions (and sliding joints' tangents) have moved:
   // the step with the old factors then contracts about as fast as the factorisation saved is dear.
-  if (fast && !a->lagged && J == a->J && P == J && js.jac_valid && js.jac_state.size() == resp.size()) {
+  if (fast && !a->isolve.lagged && J == a->J && P == J && js.jac_valid && js.jac_state.size() == resp.size()) {
     PetscInt changed = 0, total;
     for (size_t k = 0; k < resp.size(); ++k) changed += js.jac_state[k] != StateCode(resp[k]);
     PetscCallMPI(MPIU_Allreduce(&changed, &total, 1, MPIU_INT, MPI_SUM, a->comm));
     if (!total) {
-      ++a->kept;
+      ++a->isolve.kept;
       PetscCall(PetscInfo(snes, "Jacobian and factorisation kept at iteration %" PetscInt_FMT " (residual %g of the last)\n", it, (double)ratio));
       PetscCall(PetscLogEventEnd(Events().jacobian, 0, 0, 0, 0));
       PetscFunctionReturn(0);
@@ -337,11 +337,11 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
   PetscCall(MatZeroRows(M, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
-  PetscCall(MatNorm(M, NORM_INFINITY, &a->jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
-  if (a->Jlast != M) { // the round-off test's |J| |x| is computed from M itself (solver/roundoff.hpp)
+  PetscCall(MatNorm(M, NORM_INFINITY, &a->checks.jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
+  if (a->checks.Jlast != M) { // the round-off test's |J| |x| is computed from M itself (solver/roundoff.hpp)
     PetscCall(PetscObjectReference((PetscObject)M));
-    PetscCall(MatDestroy(&a->Jlast));
-    a->Jlast = M;
+    PetscCall(MatDestroy(&a->checks.Jlast));
+    a->checks.Jlast = M;
   }
   ++js.jac_assembled;
   js.jac_valid = (M == a->J) ? PETSC_TRUE : PETSC_FALSE;
@@ -351,7 +351,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
     js.jac_tangent[k] = resp[k].tangent;
     js.jac_state[k]   = StateCode(resp[k]);
   }
-  if (a->lagged) PetscCall(AssemblyLaggedFactorisation(a));
+  if (a->isolve.lagged) PetscCall(AssemblyLaggedFactorisation(a));
   else if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));

@@ -46,7 +46,7 @@ PetscErrorCode AssemblyEquilibrium(BoltnetAssembly a, Vec X, Equilibrium *eq)
   eq->reactions = std::sqrt(glob[1]);
   eq->applied   = std::abs(a->lambda_target) * a->bc.fext_norm; // also the forces inside condensed patches
   eq->joints    = std::sqrt(glob[3]);
-  eq->scale     = std::max({eq->reactions, eq->applied, eq->joints, a->force_scale_seen});
+  eq->scale     = std::max({eq->reactions, eq->applied, eq->joints, a->checks.force_scale_seen});
   eq->ratio     = eq->scale > 0 ? eq->imbalance / eq->scale : (eq->imbalance > 0 ? PETSC_INFINITY : 0.0);
   PetscFunctionReturn(0);
 }
@@ -187,7 +187,7 @@ PetscErrorCode NullVector(BoltnetAssembly a, Vec z, PetscBool *found)
     MatFactorInfo info;
     PetscCall(MatGetFactor(sub[0], MATSOLVERMUMPS, MAT_FACTOR_LU, &F));
     PetscCall(MatMumpsSetIcntl(F, 24, 1));
-    PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold));
+    PetscCall(MatMumpsSetCntl(F, 3, a->checks.null_pivot_threshold));
     PetscCall(MatGetOrdering(sub[0], MATORDERINGNATURAL, &rperm, &cperm));
     PetscCall(MatFactorInfoInitialize(&info));
     PetscCall(MatLUFactorSymbolic(F, sub[0], rperm, cperm, &info));
@@ -268,7 +268,7 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
   PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
   PetscCallMPI(MPI_Comm_split_type(a->comm, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node));
   PetscCallMPI(MPI_Allreduce(mine, need, 2, MPI_DOUBLE, MPI_SUM, node));
-  double here = a->memory_mb > 0 ? a->memory_mb : AvailableMemory(), have;
+  double here = a->isolve.memory_mb > 0 ? a->isolve.memory_mb : AvailableMemory(), have;
   PetscCallMPI(MPI_Allreduce(&here, &have, 1, MPI_DOUBLE, MPI_MIN, node));
   PetscCallMPI(MPI_Comm_free(&node));
   // The node that is shortest of memory speaks for all: ICNTL(22) holds for every rank.
@@ -279,14 +279,14 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
   PetscCallMPI(MPI_Allreduce(&shortest, &worst, 1, MPI_DOUBLE_INT, MPI_MAXLOC, a->comm));
   double report[3] = {need[0], need[1], have};
   PetscCallMPI(MPI_Bcast(report, 3, MPI_DOUBLE, worst.rank, a->comm));
-  PetscCall(PetscInfo(F, "MUMPS's analysis: %.0f MB in core, %.0f MB out of core, on the node that needs most against the %.0f MB it has%s\n", report[0], report[1], report[2], a->memory_mb > 0 ? " (-interface_memory_mb)" : " available"));
+  PetscCall(PetscInfo(F, "MUMPS's analysis: %.0f MB in core, %.0f MB out of core, on the node that needs most against the %.0f MB it has%s\n", report[0], report[1], report[2], a->isolve.memory_mb > 0 ? " (-interface_memory_mb)" : " available"));
   if (report[2] <= 0 || worst.ratio <= 1) PetscFunctionReturn(0); // fits, or what the node has is unknown
   PetscCall(MatMumpsSetIcntl(F, 22, 1));
-  a->factors_on_disk = PETSC_TRUE;
+  a->isolve.factors_on_disk = PETSC_TRUE;
   PetscInt N;
   PetscCall(MatGetSize(F, &N, nullptr));
   PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates %.0f MB to factor the %" PetscInt_FMT "-dof Jacobian in memory, more than the %.0f MB %s: the factors go to disk, %.0f MB stay in memory (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false keeps them in memory)\n", report[0], N, report[2],
-                        a->memory_mb > 0 ? "given by -interface_memory_mb" : "the node has available", report[1]));
+                        a->isolve.memory_mb > 0 ? "given by -interface_memory_mb" : "the node has available", report[1]));
   PetscFunctionReturn(0);
 }
 
@@ -305,7 +305,7 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   KSP       ksp;
   PetscBool preonly;
   PetscFunctionBeginUser;
-  a->solve_auto = PETSC_FALSE;
+  a->isolve.solve_auto = PETSC_FALSE;
   PetscCall(MatMumpsGetInfog(F, 1, &info1));
   if (info1 < 0) PetscFunctionReturn(0); // the analysis failed: the factorisation reports it
   PetscCall(MatMumpsGetIcntl(F, 22, &icntl22));
@@ -315,19 +315,19 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   PetscCall(MatMumpsGetInfog(F, 20, &entries)); // in millions when negative (MUMPS users' guide)
   const double nentries = entries < 0 ? -1e6 * (double)entries : (double)entries;
   const double ratio    = nentries > 0 ? flops / nentries : 0;
-  const bool   lagged   = preonly && icntl22 == 0 && ratio >= a->lagged_flops_per_entry;
-  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, (double)a->lagged_flops_per_entry,
+  const bool   lagged   = preonly && icntl22 == 0 && ratio >= a->isolve.lagged_flops_per_entry;
+  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, (double)a->isolve.lagged_flops_per_entry,
                       icntl22 ? "; factors on disk" : "", preonly ? "" : "; the KSP is not the default's"));
   if (!lagged) PetscFunctionReturn(0);
   // This analysis's factorisation is the lagged solve's first: the KSP becomes GMRES at the next
   // Newton iteration (AssemblyFormJacobian), when no solve is under way.
-  a->lagged        = PETSC_TRUE;
-  a->lagged_auto   = PETSC_TRUE;
-  a->factors_valid = PETSC_TRUE;
-  a->factorisations = 1;
+  a->isolve.lagged        = PETSC_TRUE;
+  a->isolve.lagged_auto   = PETSC_TRUE;
+  a->isolve.factors_valid = PETSC_TRUE;
+  a->isolve.factorisations = 1;
   PetscInt N;
   PetscCall(MatGetSize(F, &N, nullptr));
-  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio, (double)a->lagged_flops_per_entry));
+  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio, (double)a->isolve.lagged_flops_per_entry));
   PetscFunctionReturn(0);
 }
 
@@ -348,8 +348,8 @@ static PetscErrorCode SymbolicThenChoose(Mat F, Mat A, IS row, IS col, const Mat
   PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_analysis_choice", (PetscObject *)&container));
   PetscCall(PetscContainerGetPointer(container, (void **)&choice));
   PetscCall(choice->symbolic(F, A, row, col, info));
-  if (choice->a->out_of_core && !choice->a->factors_on_disk) PetscCall(ChooseFactorStorage(choice->a, F));
-  if (choice->a->solve_auto) PetscCall(ChooseInterfaceSolve(choice->a, F));
+  if (choice->a->isolve.out_of_core && !choice->a->isolve.factors_on_disk) PetscCall(ChooseFactorStorage(choice->a, F));
+  if (choice->a->isolve.solve_auto) PetscCall(ChooseInterfaceSolve(choice->a, F));
   PetscFunctionReturn(0);
 }
 
@@ -389,11 +389,11 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   PetscCall(PCFactorGetMatrix(pc, &F));
   // Set before the first factorisation; -mat_mumps_icntl_24 / -mat_mumps_cntl_3 still override them.
   PetscCall(MatMumpsSetIcntl(F, 24, 1));                   // null pivot row detection
-  PetscCall(MatMumpsSetCntl(F, 3, a->null_pivot_threshold)); // null below this x ||A_pre|| (CNTL(3) > 0: relative)
-  if (a->factors_on_disk) PetscCall(MatMumpsSetIcntl(F, 22, 1)); // out-of-core factors (MUMPS_OOC_TMPDIR)
+  PetscCall(MatMumpsSetCntl(F, 3, a->checks.null_pivot_threshold)); // null below this x ||A_pre|| (CNTL(3) > 0: relative)
+  if (a->isolve.factors_on_disk) PetscCall(MatMumpsSetIcntl(F, 22, 1)); // out-of-core factors (MUMPS_OOC_TMPDIR)
   // After MUMPS's analysis: out of core if the factors will not fit, and the automatic choice of
   // the interface solve.
-  if ((a->out_of_core && !a->factors_on_disk) || a->solve_auto) PetscCall(WrapSymbolic(a, F));
+  if ((a->isolve.out_of_core && !a->isolve.factors_on_disk) || a->isolve.solve_auto) PetscCall(WrapSymbolic(a, F));
   PetscFunctionReturn(0);
 }
 
@@ -404,7 +404,7 @@ static PetscErrorCode NoteFactorsOnDisk(BoltnetAssembly a, Mat F)
   PetscInt icntl22;
   PetscFunctionBeginUser;
   PetscCall(MatMumpsGetIcntl(F, 22, &icntl22));
-  if (icntl22 == 1) a->factors_on_disk = PETSC_TRUE;
+  if (icntl22 == 1) a->isolve.factors_on_disk = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
@@ -436,10 +436,10 @@ PetscErrorCode AssemblyCheckNullPivots(BoltnetAssembly a, PetscInt *nnull)
   if (found) PetscCall(DescribeMechanism(a, z, mech));
   PetscCall(VecDestroy(&z));
   std::ostringstream m;
-  m << "the Jacobian is singular: " << *nnull << " null pivot" << (*nnull > 1 ? "s" : "") << " (MUMPS INFOG(28), pivots below " << a->null_pivot_threshold
+  m << "the Jacobian is singular: " << *nnull << " null pivot" << (*nnull > 1 ? "s" : "") << " (MUMPS INFOG(28), pivots below " << a->checks.null_pivot_threshold
     << " of the matrix norm, -load_null_pivot_threshold), a mechanism of the structure in its current joint states";
   if (!mech.empty()) m << ": " << mech;
-  a->singular = m.str();
+  a->checks.singular = m.str();
   PetscFunctionReturn(0);
 }
 
@@ -471,7 +471,7 @@ PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why, std::str
   PetscCall(MatGetSize(a->J, &N, nullptr));
   std::ostringstream m, d;
   m.precision(3);
-  m << "MUMPS could not factor the " << N << "-dof Jacobian" << (a->factors_on_disk ? " with its factors on disk" : "") << " (INFOG(1) = " << info1 << ", INFOG(2) = " << info2 << "): ";
+  m << "MUMPS could not factor the " << N << "-dof Jacobian" << (a->isolve.factors_on_disk ? " with its factors on disk" : "") << " (INFOG(1) = " << info1 << ", INFOG(2) = " << info2 << "): ";
   switch (info1) {
   case -13: {
     // INFOG(2): the allocation that failed, in reals, or in millions of reals when negative (MUMPS
@@ -479,13 +479,13 @@ PetscErrorCode AssemblyFactorError(BoltnetAssembly a, std::string &why, std::str
     const double bytes = (info2 < 0 ? -1e6 * (double)info2 : (double)info2) * sizeof(PetscScalar);
     m << "out of memory, an allocation of " << bytes / 1e9 << " GB failed";
     d << "A smaller load step does not change that; run on more ranks (MUMPS distributes its factors) or condense more patches onto their ports (-patch_condense_ratio)";
-    if (!a->factors_on_disk) d << ", or keep the factors on disk (" << (a->storage_given ? "-mat_mumps_icntl_22 1" : "-interface_out_of_core") << ")";
+    if (!a->isolve.factors_on_disk) d << ", or keep the factors on disk (" << (a->isolve.storage_given ? "-mat_mumps_icntl_22 1" : "-interface_out_of_core") << ")";
     break;
   }
   case -19:
     m << "-mat_mumps_icntl_23 caps MUMPS's working memory per rank below what the factorisation needs";
     d << "Raise or remove the cap";
-    if (!a->factors_on_disk) d << ", or keep the factors on disk (" << (a->storage_given ? "-mat_mumps_icntl_22 1" : "-interface_out_of_core") << ")";
+    if (!a->isolve.factors_on_disk) d << ", or keep the factors on disk (" << (a->isolve.storage_given ? "-mat_mumps_icntl_22 1" : "-interface_out_of_core") << ")";
     break;
   case -8: case -9: case -11: case -12: case -14: case -15: case -17: case -20:
     m << "MUMPS's estimate of its workspace was short";

@@ -31,7 +31,7 @@ PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
   PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
   PetscCall(KSPGMRESSetRestart(ksp, 100));
   PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
-  a->lagged_ksp = PETSC_TRUE;
+  a->isolve.lagged_ksp = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
 
@@ -46,8 +46,8 @@ PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(SNESSetLagPreconditioner(a->snes, 1));
-  a->lagged = a->lagged_ksp = a->lagged_auto = PETSC_FALSE;
-  a->factorisations = 0;
+  a->isolve.lagged = a->isolve.lagged_ksp = a->isolve.lagged_auto = PETSC_FALSE;
+  a->isolve.factorisations = 0;
   PetscFunctionReturn(0);
 }
 
@@ -58,23 +58,23 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PC             pc;
   PetscFunctionBeginUser;
   const char *isolves[] = {"auto", "direct", "lagged"};
-  PetscInt    isolve    = a->solve_auto ? 0 : a->lagged ? 2 : 1;
+  PetscInt    isolve    = a->isolve.solve_auto ? 0 : a->isolve.lagged ? 2 : 1;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
   PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
-  PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, and the factors stay in memory", "AssemblySetUpSolver", a->lagged_flops_per_entry, &a->lagged_flops_per_entry, nullptr));
-  PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->out_of_core, &a->out_of_core, nullptr));
-  PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->memory_mb, &a->memory_mb, nullptr));
-  PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->refactor_its, &a->refactor_its, nullptr));
-  PetscCall(PetscOptionsReal("-interface_keep_ratio", "Direct interface solve: keep the Jacobian and its factorisation from an earlier Newton iterate while the residual falls by at least this factor per iteration and no joint changes state (modified Newton; 0: refactor at every iteration): docs/solver.md", "AssemblySetUpSolver", a->keep_ratio, &a->keep_ratio, nullptr));
+  PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, and the factors stay in memory", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry, &a->isolve.lagged_flops_per_entry, nullptr));
+  PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->isolve.out_of_core, &a->isolve.out_of_core, nullptr));
+  PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->isolve.memory_mb, &a->isolve.memory_mb, nullptr));
+  PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->isolve.refactor_its, &a->isolve.refactor_its, nullptr));
+  PetscCall(PetscOptionsReal("-interface_keep_ratio", "Direct interface solve: keep the Jacobian and its factorisation from an earlier Newton iterate while the residual falls by at least this factor per iteration and no joint changes state (modified Newton; 0: refactor at every iteration): docs/solver.md", "AssemblySetUpSolver", a->isolve.keep_ratio, &a->isolve.keep_ratio, nullptr));
   PetscOptionsEnd();
-  PetscCheck(a->keep_ratio >= 0 && a->keep_ratio < 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_keep_ratio %g must be in [0, 1): the factor by which the residual must fall per iteration for the factorisation to be kept (0: never kept)", (double)a->keep_ratio);
-  PetscCheck(a->refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->refactor_its);
-  PetscCheck(a->lagged_flops_per_entry > 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_lagged_flops_per_entry %g must be > 0", (double)a->lagged_flops_per_entry);
-  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->storage_given));
-  if (a->storage_given) a->out_of_core = PETSC_FALSE;
-  PetscCheck(a->memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->memory_mb);
-  a->solve_auto = isolve == 0 ? PETSC_TRUE : PETSC_FALSE;
-  a->lagged     = isolve == 2 ? PETSC_TRUE : PETSC_FALSE;
+  PetscCheck(a->isolve.keep_ratio >= 0 && a->isolve.keep_ratio < 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_keep_ratio %g must be in [0, 1): the factor by which the residual must fall per iteration for the factorisation to be kept (0: never kept)", (double)a->isolve.keep_ratio);
+  PetscCheck(a->isolve.refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->isolve.refactor_its);
+  PetscCheck(a->isolve.lagged_flops_per_entry > 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_lagged_flops_per_entry %g must be > 0", (double)a->isolve.lagged_flops_per_entry);
+  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->isolve.storage_given));
+  if (a->isolve.storage_given) a->isolve.out_of_core = PETSC_FALSE;
+  PetscCheck(a->isolve.memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->isolve.memory_mb);
+  a->isolve.solve_auto = isolve == 0 ? PETSC_TRUE : PETSC_FALSE;
+  a->isolve.lagged     = isolve == 2 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
   PetscCall(SNESSetDM(a->snes, a->net.dm));
@@ -89,7 +89,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESLineSearchSetType(ls, SNESLINESEARCHBOLTNET));
   PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, 1e-10, 0.0, 50, PETSC_DEFAULT));
   PetscCall(SNESGetKSP(a->snes, &ksp));
-  if (a->lagged) PetscCall(AssemblyUseLaggedKSP(a));
+  if (a->isolve.lagged) PetscCall(AssemblyUseLaggedKSP(a));
   else PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
@@ -97,16 +97,16 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESSetConvergenceTest(a->snes, ConvergedInBalance, a, nullptr));
   PetscCall(SNESSetFromOptions(a->snes));
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet convergence checks", "boltnet");
-  PetscCall(PetscOptionsReal("-load_equilibrium_rtol", "A converged step must balance: out-of-balance force (2-norm over the free dof) at most this fraction of the force scale (the largest of the applied loads, the reactions and the joint forces); else the step is cut back", "BoltnetAssemblySolveLoadPath", a->equilibrium_rtol, &a->equilibrium_rtol, nullptr));
-  PetscCall(PetscOptionsReal("-load_null_pivot_threshold", "With MUMPS: pivots below this fraction of the matrix norm are null (CNTL(3)); a Jacobian with null pivots (a mechanism) fails the solve, and the message names its patches, dof and joints", "BoltnetAssemblySolveLoadPath", a->null_pivot_threshold, &a->null_pivot_threshold, nullptr));
+  PetscCall(PetscOptionsReal("-load_equilibrium_rtol", "A converged step must balance: out-of-balance force (2-norm over the free dof) at most this fraction of the force scale (the largest of the applied loads, the reactions and the joint forces); else the step is cut back", "BoltnetAssemblySolveLoadPath", a->checks.equilibrium_rtol, &a->checks.equilibrium_rtol, nullptr));
+  PetscCall(PetscOptionsReal("-load_null_pivot_threshold", "With MUMPS: pivots below this fraction of the matrix norm are null (CNTL(3)); a Jacobian with null pivots (a mechanism) fails the solve, and the message names its patches, dof and joints", "BoltnetAssemblySolveLoadPath", a->checks.null_pivot_threshold, &a->checks.null_pivot_threshold, nullptr));
   PetscOptionsEnd();
-  PetscCheck(a->equilibrium_rtol > 0 && a->equilibrium_rtol < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_equilibrium_rtol %g must lie in (0, 1)", (double)a->equilibrium_rtol);
-  PetscCheck(a->null_pivot_threshold > 0 && a->null_pivot_threshold < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_null_pivot_threshold %g must lie in (0, 1)", (double)a->null_pivot_threshold);
+  PetscCheck(a->checks.equilibrium_rtol > 0 && a->checks.equilibrium_rtol < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_equilibrium_rtol %g must lie in (0, 1)", (double)a->checks.equilibrium_rtol);
+  PetscCheck(a->checks.null_pivot_threshold > 0 && a->checks.null_pivot_threshold < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_null_pivot_threshold %g must lie in (0, 1)", (double)a->checks.null_pivot_threshold);
   PetscCall(AssemblySetUpNullPivots(a));
   PetscCall(SNESLineSearchBoltnetSetStateChangeFunction(ls, AssemblyCountStateChanges, a));
-  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-snes_atol", &a->user_atol));
-  PetscCall(SNESGetForceIteration(a->snes, &a->user_force)); // -snes_force_iteration; a predicted step forces its own
-  PetscCall(SNESGetMaxNonlinearStepFailures(a->snes, &a->user_max_fail)); // -snes_max_fail; a predicted step may fail once more
+  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-snes_atol", &a->checks.user_atol));
+  PetscCall(SNESGetForceIteration(a->snes, &a->checks.user_force)); // -snes_force_iteration; a predicted step forces its own
+  PetscCall(SNESGetMaxNonlinearStepFailures(a->snes, &a->checks.user_max_fail)); // -snes_max_fail; a predicted step may fail once more
   PetscFunctionReturn(0);
 }
 
@@ -132,7 +132,7 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
     PetscInt nnull;
     PetscCall(AssemblyCheckNullPivots(a, &nnull));
     if (nnull) {
-      PetscCall(PetscInfo(snes, "Null pivots in the factorisation: %s\n", a->singular.c_str()));
+      PetscCall(PetscInfo(snes, "Null pivots in the factorisation: %s\n", a->checks.singular.c_str()));
       *reason = SNES_DIVERGED_LINEAR_SOLVE;
       PetscFunctionReturn(0);
     }
@@ -142,13 +142,13 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
   PetscReal worst;
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(SNESGetFunction(snes, &F, nullptr, nullptr));
-  if (!a->Jlast) PetscFunctionReturn(0);
+  if (!a->checks.Jlast) PetscFunctionReturn(0);
   // Row by row: |F_i| <= 100 eps (|J| |x|)_i, the round-off of the terms summed in that row. A row
   // of a soft part is not judged by the stiffest row (a loader spring, a joint's rotational
   // stiffness), nor a translation row by the size of the rotations.
   PetscCall(VecDuplicate(X, &share));
   PetscCall(VecDuplicate(X, &bound));
-  PetscCall(AbsMultApply(&a->roundoff, a->Jlast, X, bound));
+  PetscCall(AbsMultApply(&a->checks.roundoff, a->checks.Jlast, X, bound));
   PetscCall(VecScale(bound, 100.0 * PETSC_MACHINE_EPSILON));
   PetscCall(VecShift(bound, PETSC_SMALL * PETSC_MACHINE_EPSILON)); // rows with nothing in them
   PetscCall(VecPointwiseDivide(share, F, bound));
@@ -158,7 +158,7 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
   if (worst <= 1) {
     Equilibrium eq;
     PetscCall(AssemblyEquilibrium(a, X, &eq));
-    if (eq.ratio <= a->equilibrium_rtol) {
+    if (eq.ratio <= a->checks.equilibrium_rtol) {
       PetscCall(PetscInfo(snes, "Converged to round-off: every |F_i| <= 100 eps (|J| |x|)_i (||F|| %g), %s\n", (double)fnorm, DescribeEquilibrium(eq).c_str()));
       *reason = SNES_CONVERGED_FNORM_ABS;
     } else PetscCall(PetscInfo(snes, "At the round-off floor of every row but not in balance: %s\n", DescribeEquilibrium(eq).c_str()));
@@ -179,8 +179,8 @@ PetscErrorCode RecordLinearSolves(BoltnetAssembly a)
   PetscFunctionBeginUser;
   PetscCall(SNESGetIterationNumber(a->snes, &its));
   PetscCall(SNESGetLinearSolveIterations(a->snes, &lits));
-  a->linear_solves += its;
-  a->krylov_its += lits;
+  a->isolve.linear_solves += its;
+  a->isolve.krylov_its += lits;
   PetscFunctionReturn(0);
 }
 
@@ -191,7 +191,7 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   Vec       F;
   PetscReal r0, fj = 0, fext = 0, loc = 0;
   PetscFunctionBeginUser;
-  if (a->user_atol) PetscFunctionReturn(0);
+  if (a->checks.user_atol) PetscFunctionReturn(0);
   std::vector<Response> resp;
   PetscCall(AssemblyEvaluateJoints(a, a->X, resp));
   for (const Response &r : resp)
@@ -205,7 +205,7 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   // The forces of the problem: the joints', the applied loads, those of the converged steps before;
   // the step's initial residual only when there is none yet (it holds the increment of a prescribed
   // displacement times the stiffness it acts on, which is no force of the solution).
-  PetscReal scale = PetscMax(PetscMax(std::sqrt(fj), std::abs(a->lambda_target) * std::sqrt(fext)), a->force_scale_seen);
+  PetscReal scale = PetscMax(PetscMax(std::sqrt(fj), std::abs(a->lambda_target) * std::sqrt(fext)), a->checks.force_scale_seen);
   if (scale == 0) scale = r0;
   PetscCall(SNESSetTolerances(a->snes, scale > 0 ? 1e-12 * scale : 1e-50, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscFunctionReturn(0);
@@ -330,12 +330,12 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
       PetscCall(VecCopy(a->X, Xtry));
       PetscBool predicted = PETSC_FALSE;
       if (a->opt.predictor && cuts == 0) PetscCall(PredictStep(a, Xtry, &predicted));
-      PetscCall(SNESSetForceIteration(a->snes, predicted || a->user_force ? PETSC_TRUE : PETSC_FALSE));
-      PetscCall(SNESSetMaxNonlinearStepFailures(a->snes, a->user_max_fail + (predicted ? 1 : 0)));
+      PetscCall(SNESSetForceIteration(a->snes, predicted || a->checks.user_force ? PETSC_TRUE : PETSC_FALSE));
+      PetscCall(SNESSetMaxNonlinearStepFailures(a->snes, a->checks.user_max_fail + (predicted ? 1 : 0)));
       PetscCall(AssemblyApplyDirichlet(a, Xtry, a->lambda_target));
       PetscCall(AssemblyFreezeStuck(a, a->lambda_target - a->lambda));
       PetscCall(SetStepTolerance(a, Xtry));
-      a->singular.clear();
+      a->checks.singular.clear();
       PetscCall(PetscLogStagePush(Events().solve_stage));
       PetscCall(SNESSolve(a->snes, nullptr, Xtry));
       PetscCall(PetscLogStagePop());
@@ -374,12 +374,12 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         Equilibrium eq;
         PetscCall(AssemblyEquilibrium(a, Xtry, &eq));
         PetscCall(PetscInfo(a->snes, "step %zu: %s\n", a->steps.size() + 1, DescribeEquilibrium(eq).c_str()));
-        if (!(eq.ratio <= a->equilibrium_rtol)) {
+        if (!(eq.ratio <= a->checks.equilibrium_rtol)) {
           std::ostringstream m;
-          m << why << " but not in balance: " << DescribeEquilibrium(eq) << " > -load_equilibrium_rtol " << a->equilibrium_rtol;
+          m << why << " but not in balance: " << DescribeEquilibrium(eq) << " > -load_equilibrium_rtol " << a->checks.equilibrium_rtol;
           why      = m.str();
           accepted = false;
-        } else a->force_scale_seen = eq.scale;
+        } else a->checks.force_scale_seen = eq.scale;
       }
       if (accepted) {
         a->joints.last_increment = a->lambda_target - a->lambda;
@@ -418,12 +418,12 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         std::string fatal, advice;
         PetscBool   memory;
         PetscCall(AssemblyFactorError(a, fatal, advice, &memory));
-        if (!fatal.empty() && memory && a->out_of_core && !a->factors_on_disk) {
-          a->factors_on_disk = PETSC_TRUE;
-          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(), a->lagged_auto ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk" : ""));
-          if (a->lagged_auto) PetscCall(AssemblyUseDirectKSP(a));
+        if (!fatal.empty() && memory && a->isolve.out_of_core && !a->isolve.factors_on_disk) {
+          a->isolve.factors_on_disk = PETSC_TRUE;
+          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(), a->isolve.lagged_auto ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk" : ""));
+          if (a->isolve.lagged_auto) PetscCall(AssemblyUseDirectKSP(a));
           PetscCall(PCReset(pc));
-          a->factors_valid = PETSC_FALSE;
+          a->isolve.factors_valid = PETSC_FALSE;
           PetscCall(AssemblySetUpNullPivots(a));
           continue;
         }
@@ -435,14 +435,14 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         }
         // A Krylov solve preconditioned by a singular factorisation breaks down before the
         // convergence test sees the null pivots: look at them here, before the reset.
-        if (a->singular.empty()) {
+        if (a->checks.singular.empty()) {
           PetscInt nnull;
           PetscCall(AssemblyCheckNullPivots(a, &nnull));
         }
         PetscCall(PCReset(pc));
-        a->factors_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
+        a->isolve.factors_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
         PetscCall(AssemblySetUpNullPivots(a));
-        if (!a->singular.empty()) singular = a->singular;
+        if (!a->checks.singular.empty()) singular = a->checks.singular;
         else PetscCall(AssemblyDescribeSingular(a, Xtry, singular));
         if (!singular.empty()) chatter += "; " + singular;
       }

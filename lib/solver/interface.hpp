@@ -1,0 +1,64 @@
+// What the solver keeps between Newton iterations and load steps, beside the solution itself: the
+// interface solve's choice and its factorisation (InterfaceSolve), and what it needs to trust a
+// "converged" (ConvergenceChecks). Both live in the assembly (network/assembly.hpp); the code that
+// reads and writes them is in lib/solver and network/jacobian.cpp.
+#pragma once
+
+#include "solver/roundoff.hpp"
+
+#include <petscmat.h>
+#include <string>
+
+namespace boltnet {
+
+// The interface solve (docs/solver.md, "The interface solve"): direct (J factored whenever it
+// changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian, kept
+// in the PC and refactored when the Krylov solve takes more than refactor_its iterations or fails).
+// solve_auto: not chosen yet; MUMPS's first analysis of J decides (lagged where it estimates at
+// least lagged_flops_per_entry flops per entry of the factors, in core).
+struct InterfaceSolve {
+  PetscBool lagged                 = PETSC_FALSE;
+  PetscBool solve_auto             = PETSC_TRUE;
+  PetscBool lagged_ksp             = PETSC_FALSE; // the KSP is set up for the lagged solve
+  PetscBool lagged_auto            = PETSC_FALSE; // lagged by auto's choice: direct again if the factors go to disk
+  PetscReal lagged_flops_per_entry = 1000;
+  PetscInt  refactor_its           = 25;
+  PetscBool factors_valid          = PETSC_FALSE; // the PC's factors are of a Jacobian of this analysis
+  // The direct solve's modified Newton (docs/solver.md, "Keeping the factorisation"): the Jacobian
+  // of an earlier iterate of the same solve, and its factors, are kept while the residual falls by
+  // at least this factor per iteration and no joint changes state (0: refactor at every iteration).
+  PetscReal keep_ratio = 0.1;
+  PetscInt  keep_it    = -1; // iteration of the last Jacobian call in this solve
+  PetscReal keep_fnorm = 0;  // the residual norm there
+  PetscInt  kept       = 0;  // Jacobians kept by this rule, for summary.json
+  // Factors on disk (MUMPS ICNTL(22) = 1) when MUMPS's analysis estimates more memory than a node
+  // has (memory_mb, 0: what the operating system says is available), or when a factorisation runs
+  // out of memory: -interface_out_of_core; factors_on_disk once that happened, or once a
+  // factorisation ran with the user's own -mat_mumps_icntl_22 1 (solver/equilibrium.cpp). That
+  // option, given either way, decides alone (storage_given): boltnet neither chooses nor retries.
+  PetscBool out_of_core     = PETSC_TRUE;
+  PetscBool storage_given   = PETSC_FALSE;
+  PetscReal memory_mb       = 0;
+  PetscBool factors_on_disk = PETSC_FALSE;
+  PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
+};
+
+// Trusting "converged" (solver/equilibrium.cpp, docs/solver.md, "When is a step converged").
+struct ConvergenceChecks {
+  PetscBool user_atol     = PETSC_FALSE; // -snes_atol given: keep it
+  PetscBool user_force    = PETSC_FALSE; // -snes_force_iteration given
+  PetscInt  user_max_fail = 1;           // -snes_max_fail
+  PetscReal jnorm         = 0;           // ||J||_inf of the last Jacobian
+  // The last Jacobian assembled (referenced), whose |J| |x| is the round-off of each row of K u,
+  // and what that product keeps between calls (solver/roundoff.hpp).
+  Mat     Jlast = nullptr;
+  AbsMult roundoff;
+  // A converged step must balance to this fraction of its force scale; MUMPS pivots below
+  // null_pivot_threshold ||A|| are null.
+  PetscReal   equilibrium_rtol     = 1e-6;
+  PetscReal   null_pivot_threshold = 1e-12;
+  std::string singular;             // the mechanism found by the last factorisation with null pivots ("" if none)
+  PetscReal   force_scale_seen = 0; // the largest force scale of the converged steps so far
+};
+
+} // namespace boltnet
