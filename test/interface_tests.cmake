@@ -180,3 +180,17 @@ foreach(ranks 1 2 3)
                  -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3b.yaml
                  -output_dir ${BOLTNET_OUT}/log_view_stages_np${ranks} -log_view -patch_condense true)
 endforeach()
+
+# The interface solve's own event (BoltnetInterfaceSolve, KSP's pre- and post-solve hooks) holds
+# every Newton iteration's linear solve with its factorisation: as many calls as PETSc's KSPSolve,
+# and at least the time of PCSetUp and KSPSolve together (check_interface_event.py), with the
+# direct solve (fig3a) and the lagged one (the small plate grid, GMRES on a kept factorisation).
+# One rank, where the -log_view times are that rank's own.
+add_test(NAME log_view_interface_solve_direct
+  COMMAND sh -c "rm -rf \"$2\" && \"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -log_view :\"$2.log\" > /dev/null && \"$3\" \"$4\" \"$2.log\""
+          $<TARGET_FILE:boltnet_driver> ${BOLTNET_SCENES}/fig3a.yaml ${BOLTNET_OUT}/log_view_interface_direct ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_interface_event.py)
+set_tests_properties(log_view_interface_solve_direct PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
+add_test(NAME log_view_interface_solve_lagged
+  COMMAND sh -c "rm -rf \"$2\" && \"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -interface_solve lagged -log_view :\"$2.log\" > /dev/null && \"$3\" \"$4\" \"$2.log\""
+          $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_OUT}/log_view_interface_lagged ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_interface_event.py)
+set_tests_properties(log_view_interface_solve_lagged PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)

@@ -49,6 +49,7 @@ PetscErrorCode BoltnetInitializePackage(void)
   PetscCall(PetscLogEventRegister("BoltnetResidual", events.classid, &events.residual));
   PetscCall(PetscLogEventRegister("BoltnetJacobian", events.classid, &events.jacobian));
   PetscCall(PetscLogEventRegister("BoltnetJoints", events.classid, &events.joints));
+  PetscCall(PetscLogEventRegister("BoltnetInterfaceSolve", events.classid, &events.interface_solve));
   PetscCall(PetscLogEventRegister("BoltnetRecover", events.classid, &events.recover));
   PetscCall(PetscLogEventRegister("BoltnetOutput", events.classid, &events.output));
   PetscCall(PetscLogEventRegister("BoltnetJointOutput", events.classid, &events.joint_output));

@@ -51,6 +51,23 @@ PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// The interface solve of a Newton iteration as one event (BoltnetInterfaceSolve): KSPSolve calls
+// the pre-solve hook before KSPSetUp, so the factorisation (PCSetUp) is inside it, and the
+// post-solve hook once the Krylov method (or the triangular solves alone) has returned.
+static PetscErrorCode BeginInterfaceSolve(KSP, Vec, Vec, void *)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(Events().interface_solve, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode EndInterfaceSolve(KSP, Vec, Vec, void *)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventEnd(Events().interface_solve, 0, 0, 0, 0));
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
 {
   SNESLineSearch ls;
@@ -91,6 +108,8 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   if (a->isolve.lagged) PetscCall(AssemblyUseLaggedKSP(a));
   else PetscCall(KSPSetType(ksp, KSPPREONLY));
+  PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, nullptr));
+  PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, nullptr));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
