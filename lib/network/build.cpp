@@ -164,13 +164,8 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
   std::set<PetscInt> keep, mine;
   PetscFunctionBeginUser;
   for (const OwnedPatch &op : a->patches.owned) keep.insert(op.index);
-  std::size_t whole = 0, nodes = 0;
   for (auto &[pos, sp] : a->layout.shells) {
-    if (keep.count(pos)) {
-      ++whole;
-      nodes += (std::size_t)sp.nnodes();
-      continue;
-    }
+    if (keep.count(pos)) continue;
     ShellPatch stub;
     stub.id        = sp.id;
     stub.material  = sp.material;
@@ -188,6 +183,12 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
   a->layout.cut_parts.clear();
   std::vector<JointDesc>().swap(a->model.joints); // laid out: the network's joint components hold them
   std::vector<JointComp>().swap(a->layout.joints); // each rank's own are its edges' components
+  std::size_t whole = 0, nodes = 0; // what is left with a mesh, whatever the rule above kept
+  for (const auto &[pos, sp] : a->layout.shells)
+    if (!sp.mesh.elems.empty()) {
+      ++whole;
+      nodes += sp.mesh.x.size();
+    }
   PetscCall(PetscInfo(nullptr, "Kept the meshes of %zu of %zu shell patches (%zu nodes) on this rank past the set-up\n", whole, a->layout.shells.size(), nodes));
   PetscCall(PetscInfo(nullptr, "Kept the components of %zu of %" PetscInt_FMT " joints on this rank past the set-up\n", a->joints.size(), a->layout.njoints));
   PetscFunctionReturn(0);

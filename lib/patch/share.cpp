@@ -8,6 +8,7 @@
 #include <climits>
 #include <cstring>
 #include <numeric>
+#include <type_traits>
 
 namespace boltnet {
 
