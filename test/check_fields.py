@@ -18,6 +18,10 @@
   du_n, du_t1, du_t2 of joints.csv (1e-9 of the largest jump); state and in-plane force likewise;
 - --fixed: the nodes of shell part PART whose coordinate AXIS (x, y or z) equals VALUE have zero
   DOFS (colon-separated from ux uy uz rx ry rz, or all) at every step, and some node moves;
+- independent of the writer: each joint line's end on a shell part lies on the fastener's axis
+  (the scene table's position and normal) to 1e-9 of the model's size, and where that part's nodes
+  nearest the axis are at one axial position (a flat sheet across the fastener), at that position:
+  the reference point of a footprint-coupled joint is the bolt axis at its footprint's mid-surface;
 - --ref DIR1: every dataset equals the one in DIR1 (another rank count) to R (default 1e-9) of its
   quantity's scale (largest magnitude over all steps, or for a quantity the load leaves zero the
   load's scale in its units); integer datasets exactly;
@@ -106,6 +110,38 @@ def check_results(h5, times):
         print(f"check_fields: element results of {nsteps} steps consistent (frames, von Mises, principal): {worst:.2g}")
 
 
+def check_joint_points(h5, table, ids, lines):
+    """Each joint line's ends on shell parts: on the fastener's axis, at a flat sheet's mid-surface."""
+    pts, x = h5["/joints/coordinates"][:], h5["/shells/coordinates"][:]
+    npart = h5["/shells/node_part"][:, 0]
+    size = max(np.abs(x).max(), 1.0)
+    rows = {int(r["id"]): r for r in table}
+    off_axis = off_sheet = 0.0
+    checked = 0
+    for i, jid in enumerate(ids):
+        r = rows[int(jid)]
+        c = np.array([float(r[k]) for k in ("x", "y", "z")])
+        n = np.array([float(r[k]) for k in ("nx", "ny", "nz")])
+        n /= np.linalg.norm(n)
+        for side, part in enumerate((int(r["patch_a"]), int(r["patch_b"]))):
+            mine = x[npart == part]
+            if not len(mine):
+                continue  # a rigid part
+            p = pts[lines[i, side]]
+            v = p - c
+            off_axis = max(off_axis, np.linalg.norm(v - v.dot(n) * n) / size)
+            w = mine - c
+            radial = np.linalg.norm(w - np.outer(w @ n, n), axis=1)
+            near = np.argsort(radial)[:4]
+            axial = w[near] @ n
+            if np.ptp(axial) <= 1e-12 * size:
+                off_sheet = max(off_sheet, abs(v.dot(n) - axial.mean()) / size)
+            checked += 1
+    if off_axis > 1e-9 or off_sheet > 1e-9:
+        fail(f"joint line ends off the fastener axis by {off_axis:g}, off the sheet's mid-surface by {off_sheet:g} of the model's size")
+    print(f"check_fields: {checked} joint line ends on shell parts on their axes ({off_axis:.2g}) and sheets ({off_sheet:.2g})")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("dir")
@@ -183,6 +219,8 @@ def main():
     frames = {int(r["id"]): frame(r) for r in read_table(args.scene_joints)}
     ids = h5["/joints/id"][:, 0]
     lines = h5["/joints/lines"][:]
+
+    check_joint_points(h5, read_table(args.scene_joints), ids, lines)
 
     maxerr, scale = 0.0, 0.0
     for k, (t, load) in enumerate(zip(times, loads)):
