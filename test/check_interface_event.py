@@ -10,25 +10,15 @@ hook, so that it counts one call per KSPSolve and its time covers the factorisat
 which MatLUFactorNum is the numeric part) as well as the solve itself (PETSc's KSPSolve event,
 which begins after KSPSetUp). A hook that missed the factorisation or a call would fail here.
 """
-import re
+import os
 import sys
 
-
-def events(path):
-    """{event: [count, time]} summed over the stages."""
-    out = {}
-    row = re.compile(r"^(\w+)\s+(\d+)\s+[\d.]+\s+([\d.]+e[+-]\d+)\s")
-    for line in open(path):
-        m = row.match(line)
-        if m:
-            e = out.setdefault(m.group(1), [0, 0.0])
-            e[0] += int(m.group(2))
-            e[1] += float(m.group(3))
-    return out
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from log_view import summed  # noqa: E402
 
 
 def main():
-    ev = events(sys.argv[1])
+    ev = summed(sys.argv[1])
     bad = []
     for name in ("BoltnetInterfaceSolve", "KSPSolve", "PCSetUp", "MatLUFactorNum"):
         if name not in ev:

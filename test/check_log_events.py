@@ -7,21 +7,15 @@ NAME=N: the event ran exactly N times on the rank that ran it most (the "Count M
 event that never ran may be left out of the table: count 0). NAME+: it ran at least once.
 Used to check that a code path is or is not taken (test/joint_table_tests.cmake).
 """
-import re
+import os
 import sys
 
-
-def counts(path):
-    c = {}
-    for line in open(path):
-        w = line.split()
-        if len(w) > 2 and re.fullmatch(r"\d+", w[1]) and w[0].startswith("Boltnet"):
-            c[w[0]] = max(c.get(w[0], 0), int(w[1]))
-    return c
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from log_view import largest_counts  # noqa: E402
 
 
 def main():
-    c = counts(sys.argv[1])
+    c = largest_counts(sys.argv[1], "Boltnet")
     bad = []
     for spec in sys.argv[2:]:
         if spec.endswith("+"):
