@@ -194,3 +194,15 @@ add_test(NAME log_view_interface_solve_lagged
   COMMAND sh -c "rm -rf \"$2\" && \"$0\" -scene \"$1\" -output_dir \"$2\" -output_fields false -interface_solve lagged -log_view :\"$2.log\" > /dev/null && \"$3\" \"$4\" \"$2.log\""
           $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_OUT}/log_view_interface_lagged ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_interface_event.py)
 set_tests_properties(log_view_interface_solve_lagged PROPERTIES ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
+
+# -snes_ksp_ew still reaches every linear solve: the interface event's hooks take the place of
+# SNES's own KSP hooks (KSPPreSolve_SNESEW, where Eisenstat-Walker sets the tolerance) and must
+# call them. PETSc reports each tolerance it sets under -info; check_ksp_ew.py checks one per
+# linear solve and the first of each step at the given -snes_ksp_ew_rtol0 (PETSc's definition of
+# the method). The lagged solve on the small grid, where GMRES uses the tolerance; 1 and 2 ranks.
+foreach(ranks 1 2)
+  add_test(NAME lagged_snes_ksp_ew_np${ranks}
+    COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged -snes_ksp_ew -snes_ksp_ew_rtol0 0.25 -info :snes > \"$3.log\" && \"$5\" \"$6\" \"$3.log\" \"$3/summary.json\" 0.25"
+            ${MPIEXEC_EXECUTABLE} ${ranks} $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/lagged_ksp_ew_np${ranks} ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_ksp_ew.py)
+  set_tests_properties(lagged_snes_ksp_ew_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
+endforeach()

@@ -9,6 +9,7 @@
 #include "solver/loadpath.hpp"
 #include "solver/progress.hpp"
 
+#include <petsc/private/snesimpl.h> // KSPPreSolve_SNESEW, KSPPostSolve_SNESEW: SNES's own KSP hooks
 #include <petsctime.h>
 
 #include <cmath>
@@ -54,18 +55,22 @@ PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
 // The interface solve of a Newton iteration as one event (BoltnetInterfaceSolve): KSPSolve calls
 // the pre-solve hook before KSPSetUp, so the factorisation (PCSetUp) is inside it, and the
 // post-solve hook once the Krylov method (or the triangular solves alone) has returned. KSP holds
-// one pair of hooks; in PETSc 3.18 nothing else in boltnet's solve sets them (with -snes_ksp_ew the
-// event is still logged: checked on fig3a).
-static PetscErrorCode BeginInterfaceSolve(KSP, Vec, Vec, void *)
+// one pair of hooks, and SNESGetKSP has already given it SNES's own: KSPPreSolve_SNESEW and
+// KSPPostSolve_SNESEW, where -snes_ksp_ew (Eisenstat-Walker) sets each solve's tolerance and
+// measures it. These hooks take their place, so they call them (ctx is the SNES); without it
+// -snes_ksp_ew would silently do nothing.
+static PetscErrorCode BeginInterfaceSolve(KSP ksp, Vec b, Vec x, void *ctx)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Events().interface_solve, 0, 0, 0, 0));
+  PetscCall(KSPPreSolve_SNESEW(ksp, b, x, static_cast<SNES>(ctx)));
   PetscFunctionReturn(0);
 }
 
-static PetscErrorCode EndInterfaceSolve(KSP, Vec, Vec, void *)
+static PetscErrorCode EndInterfaceSolve(KSP ksp, Vec b, Vec x, void *ctx)
 {
   PetscFunctionBeginUser;
+  PetscCall(KSPPostSolve_SNESEW(ksp, b, x, static_cast<SNES>(ctx)));
   PetscCall(PetscLogEventEnd(Events().interface_solve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
@@ -110,8 +115,8 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   if (a->isolve.lagged) PetscCall(AssemblyUseLaggedKSP(a));
   else PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, nullptr));
-  PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, nullptr));
+  PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, a->snes));
+  PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, a->snes));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));

@@ -1,0 +1,48 @@
+#!/usr/bin/python3
+"""Checks that -snes_ksp_ew (Eisenstat-Walker) set the tolerance of every linear solve of a run.
+
+  check_ksp_ew.py INFO_LOG SUMMARY_JSON RTOL0
+
+INFO_LOG is the run's output under -info :snes. PETSc's KSPPreSolve_SNESEW, the KSP pre-solve hook
+that SNESGetKSP installs, reports each tolerance it sets ("iter k, Eisenstat-Walker (version v)
+KSP rtol=r", rank 0's lines counted). The reference is PETSc's definition of the method
+(SNESKSPSetParametersEW): the first solve of each SNESSolve uses rtol_0 (-snes_ksp_ew_rtol0, given
+here as RTOL0), and every tolerance lies in (0, rtol_max], rtol_max 0.9 by default. A KSP whose
+hooks were replaced without calling PETSc's would report nothing, and fail here.
+"""
+import json
+import re
+import sys
+
+
+def main():
+    log, summary, rtol0 = sys.argv[1], sys.argv[2], float(sys.argv[3])
+    line = re.compile(r"^\[0\] <snes> KSPPreSolve_SNESEW\(\): iter (\d+), Eisenstat-Walker \(version \d+\) KSP rtol=([0-9.eE+-]+)")
+    sets = []
+    with open(log) as f:
+        for text in f:
+            m = line.match(text)
+            if m:
+                sets.append((int(m.group(1)), float(m.group(2))))
+    with open(summary) as f:
+        s = json.load(f)
+    bad = []
+    if s.get("status") != "converged":
+        bad.append(f"the run did not converge: {s.get('status')}")
+    solves = s.get("linear_solves", 0)
+    if len(sets) != solves or solves == 0:
+        bad.append(f"{len(sets)} Eisenstat-Walker tolerances for {solves} linear solves")
+    firsts = [r for it, r in sets if it == 0]
+    if not firsts:
+        bad.append("no first iteration's tolerance")
+    if any(abs(r - rtol0) > 1e-12 * rtol0 for r in firsts):
+        bad.append(f"first iterations' tolerances {sorted(set(firsts))}, expected -snes_ksp_ew_rtol0 {rtol0}")
+    if any(not (0 < r <= 0.9) for _, r in sets):
+        bad.append("a tolerance outside (0, 0.9]")
+    if bad:
+        sys.exit("FAIL: " + "; ".join(bad))
+    print(f"{len(sets)} linear solves, each with its Eisenstat-Walker tolerance ({min(r for _, r in sets):.3g} to {max(r for _, r in sets):.3g}); {len(firsts)} first iterations at {rtol0}")
+
+
+if __name__ == "__main__":
+    main()
