@@ -183,9 +183,11 @@ PetscErrorCode ReleaseUnowned(BoltnetAssembly a)
   a->layout.cut_parts.clear();
   std::vector<JointDesc>().swap(a->model.joints); // laid out: the network's joint components hold them
   std::vector<JointComp>().swap(a->layout.joints); // each rank's own are its edges' components
-  std::size_t whole = 0, nodes = 0; // what is left with a mesh, whatever the rule above kept
+  // What is left with a mesh, whatever the rule above kept: nodes or elements (a patch of a cut
+  // part may have nodes whose elements all straddle the cut, in its shared list).
+  std::size_t whole = 0, nodes = 0;
   for (const auto &[pos, sp] : a->layout.shells)
-    if (!sp.mesh.elems.empty()) {
+    if (!sp.mesh.x.empty() || !sp.mesh.elems.empty() || !sp.shared.empty()) {
       ++whole;
       nodes += sp.mesh.x.size();
     }
