@@ -199,8 +199,8 @@ set_tests_properties(log_view_interface_solve_lagged PROPERTIES ENVIRONMENT "${B
 # SNES's own KSP hooks (KSPPreSolve_SNESEW, where Eisenstat-Walker sets the tolerance) and must
 # call them. PETSc reports each tolerance it sets under -info; check_ksp_ew.py checks one per
 # linear solve and the first of each step at the given -snes_ksp_ew_rtol0 (PETSc's definition of
-# the method). The lagged solve on the small grid, where GMRES uses the tolerance; 1 and 2 ranks.
-foreach(ranks 1 2)
+# the method). The lagged solve on the small grid, where GMRES uses the tolerance; 1 to 3 ranks.
+foreach(ranks 1 2 3)
   add_test(NAME lagged_snes_ksp_ew_np${ranks}
     COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged -snes_ksp_ew -snes_ksp_ew_rtol0 0.25 -info :snes > \"$3.log\" && \"$5\" \"$6\" \"$3.log\" \"$3/summary.json\" 0.25"
             ${MPIEXEC_EXECUTABLE} ${ranks} $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/lagged_ksp_ew_np${ranks} ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_ksp_ew.py)
