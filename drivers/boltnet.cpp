@@ -79,7 +79,8 @@ struct DriverOptions {
 // What a set-up solves: the scene's tables (cases: one made of every condition of the table, or
 // those of -load_cases), or a group of subcases of a Nastran deck that hold the same dof.
 struct Source {
-  const nastran::Deck  *deck = nullptr;
+  nastran::Deck        *deck = nullptr; // rank 0's (the others' is empty)
+  bool                  last = false;   // the deck's last set-up: the deck is released once described
   std::vector<PetscInt> subcases;
   nastran::ModelOptions options;
   std::string           fasteners;
@@ -96,6 +97,7 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
   if (src.deck) { // a deck's groups of subcases are known before (SceneNastranSetUps)
     std::vector<std::vector<BCDesc>> conditions;
     PetscCall(SceneDescribeNastran(comm, &scene, *src.deck, src.subcases, src.options, src.fasteners, a, &conditions));
+    if (src.last) *src.deck = nastran::Deck{}; // not needed past here: its memory goes to the solve
     for (size_t k = 0; k < src.subcases.size(); ++k) {
       LoadCase c;
       c.name    = "subcase-" + std::to_string(src.subcases[k]);
@@ -363,7 +365,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     char                               name[PETSC_MAX_PATH_LEN] = "";
     const std::string deckpath = scene.from_file.count("nastran_deck") && deckfile[0] != '/' && !scene.dir.empty() ? scene.dir + "/" + deckfile : std::string(deckfile);
     const std::string fastpath = scene.from_file.count("nastran_fasteners") && fasteners[0] && fasteners[0] != '/' && !scene.dir.empty() ? scene.dir + "/" + fasteners : std::string(fasteners);
-    PetscCall(NastranReadDeck(comm, deckpath.c_str(), nastran::ReadOptions{}, &deck));
+    PetscCall(NastranReadDeckOnRank0(comm, deckpath.c_str(), nastran::ReadOptions{}, &deck)); // the deck and its model are rank 0's (io/nastran.cpp)
     PetscCall(SceneNastranSubcases(comm, deck, subcase, &ids));
     PetscCall(SceneNastranSetUps(comm, deck, ids, &groups));
     { // the scene's name, or the deck's file name without its extension
@@ -381,7 +383,7 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     const std::string dir = outdir[0] ? std::string(outdir) : "results/" + scene.name;
     // One set-up per SPC set: the subcases that hold the same dof share it (docs/nastran.md).
     for (size_t g = 0; g < groups.size(); ++g) {
-      Source src{&deck, groups[g], {}, fastpath};
+      Source src{&deck, g + 1 == groups.size(), groups[g], {}, fastpath};
       src.options.tie_penalty = tie_penalty;
       src.options.bush_offsets = bush_offsets == PETSC_TRUE;
       size_t ngroups = groups.size();

@@ -203,3 +203,21 @@ foreach(case_match
     -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_r3}/rbe3-${case}.bdf)
   set_tests_properties(nastran_bad_rbe3_${case}_np2 PROPERTIES FIXTURES_REQUIRED nastran_rbe3_decks)
 endforeach()
+
+# The deck is read on rank 0 alone and each shell part's mesh goes from there to the one rank that
+# lays it out (docs/nastran.md, "On several ranks"): the wing box of scripts/make-nastran-wingbox
+# (three properties, two set-ups) against its own CQUAD4/CTRIA3 cards, counted by the script; and
+# its joints the same on 3 ranks as on 1.
+foreach(ranks 1 2 3)
+  add_test(NAME nastran_deck_on_rank0_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${BOLTNET_OUT}/nastran-wingbox/wingbox-small.bdf ${ranks}
+            -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe ${_drv} -nastran_deck ${BOLTNET_OUT}/nastran-wingbox/wingbox-small.bdf
+            -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_np${ranks} -load_max 1 -load_steps 1 -info)
+  set_tests_properties(nastran_deck_on_rank0_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox
+    FIXTURES_SETUP nastran_deck_on_rank0_np${ranks})
+endforeach()
+foreach(sub 1 2)
+  add_test(NAME nastran_wingbox_${sub}_ranks_1_vs_3
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_deck_on_rank0_np1/subcase-${sub}/joints.csv ${BOLTNET_OUT}/nastran_deck_on_rank0_np3/subcase-${sub}/joints.csv 1e-9)
+  set_tests_properties(nastran_wingbox_${sub}_ranks_1_vs_3 PROPERTIES FIXTURES_REQUIRED "nastran_deck_on_rank0_np1;nastran_deck_on_rank0_np3")
+endforeach()

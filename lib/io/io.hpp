@@ -30,16 +30,26 @@ struct Scene {
 PetscErrorCode SceneInsertOptionsFile(MPI_Comm comm, const char file[], Scene *scene);
 // Read -scene_* options and the CSV tables they name, and describe the assembly.
 PetscErrorCode SceneDescribeAssembly(MPI_Comm comm, Scene *scene, BoltnetAssembly a);
-// The parameters of joint type `type` from -joint_<type>_* (given, or identified from the fastener
-// geometry, which may measure the shell mesh around its first joint: id, patches, axis n, t1, x).
-PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::string &type, PetscInt id, PetscInt patch_a, PetscInt patch_b, const PetscReal n[3], const PetscReal t1[3], const PetscReal x[3], BoltnetJointParams *p, Scene *scene);
+// The first joint of a joint type: where a type identified from its fastener geometry measures the
+// shell mesh for its shell correction (docs/identify.md, "Stiffness already in the shells").
+struct FirstJoint {
+  PetscInt  id, patch_a, patch_b;
+  PetscReal n[3], t1[3], x[3];
+};
+// Rank 0's joint types, each with its first joint, given to every rank (*firsts on return), and the
+// parameters of each from -joint_<type>_* (given, or identified from the fastener geometry):
+// (*types)[k] for (*firsts)[k], on every rank, which each read the options. Collective.
+PetscErrorCode SceneJointTypes(MPI_Comm comm, BoltnetAssembly a, std::vector<std::pair<std::string, FirstJoint>> *firsts, std::vector<BoltnetJointParams> *types, Scene *scene);
 // A Nastran deck as the scene (io/nastran.cpp, docs/nastran.md "From a deck to a model"): the ids
 // of the subcases to run (chosen > 0: that one, checked; else every subcase of the deck); those
 // ids grouped by the set-up they can share (the same SPC set: the same dof held), in the order of
 // ids; and the model of a group of subcases described into the assembly (the first subcase's
 // model, with the node sets of every subcase's conditions, and its conditions as the model's),
 // with the fastener table (CSV: type and first [, last] or pid; "" for none) turning chosen
-// CBUSH/CFAST into joints of a type. conditions[k]: the conditions of subcases[k].
+// CBUSH/CFAST into joints of a type. conditions[k]: the conditions of subcases[k]. The deck is rank
+// 0's alone (NastranReadDeckOnRank0; the others pass an empty one): these find their answers there
+// and give them to every rank, the meshes staying on rank 0 until the layout sends them to their
+// holders (docs/nastran.md, "On several ranks"). Collective.
 PetscErrorCode SceneNastranSubcases(MPI_Comm comm, const nastran::Deck &deck, PetscInt chosen, std::vector<PetscInt> *ids);
 PetscErrorCode SceneNastranSetUps(MPI_Comm comm, const nastran::Deck &deck, const std::vector<PetscInt> &ids, std::vector<std::vector<PetscInt>> *groups);
 PetscErrorCode SceneDescribeNastran(MPI_Comm comm, Scene *scene, const nastran::Deck &deck, const std::vector<PetscInt> &subcases, const nastran::ModelOptions &options, const std::string &fasteners, BoltnetAssembly a, std::vector<std::vector<BCDesc>> *conditions);

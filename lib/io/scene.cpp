@@ -7,6 +7,7 @@
 #include "io/input.hpp"
 #include "io/table.hpp"
 #include "core/errors.hpp"
+#include "core/bcast.hpp"
 #include "core/guard.hpp"
 #include "mesh/gmsh.hpp"
 #include "identify/coupon.hpp"
@@ -104,13 +105,6 @@ PetscErrorCode JointParamsOptions(PetscOptionItems *PetscOptionsObject, BoltnetJ
 }
 
 // Options of one joint type, prefix joint_<type>_; -help lists them with defaults and units.
-// The first joint of a type (where a joint type identified from its geometry measures the shell
-// mesh for the shell correction).
-struct FirstJoint {
-  PetscInt  id, patch_a, patch_b;
-  PetscReal n[3], t1[3], x[3];
-};
-
 // The shell correction of a joint type identified from its geometry (docs/identify.md, "Stiffness
 // already in the shells"): the coupon meshed like the patches around its first joint, with their
 // sections and the scene's coupling; corrects q's kc and kt and records the coupon in j.
@@ -144,7 +138,14 @@ PetscErrorCode ShellCorrection(MPI_Comm comm, BoltnetAssembly a, const std::stri
       spec.sheet[i].direction = {dir[0] * e1[0] + dir[1] * e1[1] + dir[2] * e1[2], dir[0] * e2[0] + dir[1] * e2[1] + dir[2] * e2[2], 0.0};
     }
     if (sc.h > 0) spec.hx[i] = spec.hy[i] = sc.h;
-    else {
+    else if (sp->on_rank0) { // measured where the mesh is
+      PetscMPIInt rank;
+      double      h[2] = {0, 0};
+      PetscCallMPI(MPI_Comm_rank(comm, &rank));
+      PetscCall(Collective(comm, "measuring the elements", [&] { return rank ? PetscErrorCode(0) : identify::FootprintElementSize(PETSC_COMM_SELF, sp->mesh, fj.x, fj.n, fj.t1, radius, &h[0], &h[1]); }));
+      PetscCallMPI(MPI_Bcast(h, 2, MPI_DOUBLE, 0, comm));
+      spec.hx[i] = h[0], spec.hy[i] = h[1];
+    } else {
       // A part read later (ShellPart::read) is read here for the measurement and not kept.
       ShellMesh read;
       if (sp->read) PetscCall(Collective(comm, "reading a mesh", [&] { return sp->read(&read); }));
@@ -265,10 +266,23 @@ PetscErrorCode MaterialFromOptions(MPI_Comm comm, const std::string &name, shell
 
 } // namespace
 
-PetscErrorCode SceneJointType(MPI_Comm comm, BoltnetAssembly a, const std::string &type, PetscInt id, PetscInt patch_a, PetscInt patch_b, const PetscReal n[3], const PetscReal t1[3], const PetscReal x[3], BoltnetJointParams *p, Scene *scene)
+PetscErrorCode SceneJointTypes(MPI_Comm comm, BoltnetAssembly a, std::vector<std::pair<std::string, FirstJoint>> *firsts, std::vector<BoltnetJointParams> *types, Scene *scene)
 {
-  const FirstJoint fj = {id, patch_a, patch_b, {n[0], n[1], n[2]}, {t1[0], t1[1], t1[2]}, {x[0], x[1], x[2]}};
-  return Guard(comm, [&] { return JointTypeFromOptions(comm, a, type, fj, p, scene); });
+  static_assert(std::is_trivially_copyable<FirstJoint>::value, "a first joint travels as bytes");
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  std::vector<FirstJoint> first;
+  for (const auto &[type, f] : *firsts) first.push_back(f);
+  PetscCall(BcastVector(comm, &first));
+  if (rank) firsts->resize(first.size());
+  for (size_t k = 0; k < first.size(); ++k) {
+    PetscCall(BcastString(comm, &(*firsts)[k].first));
+    (*firsts)[k].second = first[k];
+  }
+  types->assign(firsts->size(), BoltnetJointParams{});
+  for (size_t k = 0; k < firsts->size(); ++k) PetscCall(Guard(comm, [&] { return JointTypeFromOptions(comm, a, (*firsts)[k].first, (*firsts)[k].second, &(*types)[k], scene); }));
+  PetscFunctionReturn(0);
 }
 
 namespace {
@@ -309,26 +323,6 @@ PetscErrorCode FastenerRows(MPI_Comm comm, const Table &joints, std::vector<Fast
     }
     f.type = it->second;
     rows->push_back(f);
-  }
-  PetscFunctionReturn(0);
-}
-
-// Rank 0's joint types, with their first joints, given to every rank.
-PetscErrorCode BcastJointTypes(MPI_Comm comm, std::vector<std::pair<std::string, FirstJoint>> *firsts)
-{
-  static_assert(std::is_trivially_copyable<FirstJoint>::value, "a first joint travels as bytes");
-  PetscMPIInt rank;
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscInt n = (PetscInt)firsts->size();
-  PetscCallMPI(MPI_Bcast(&n, 1, MPIU_INT, 0, comm));
-  if (rank) firsts->resize((size_t)n);
-  for (auto &[type, first] : *firsts) {
-    PetscInt len = (PetscInt)type.size();
-    PetscCallMPI(MPI_Bcast(&len, 1, MPIU_INT, 0, comm));
-    type.resize((size_t)len);
-    PetscCallMPI(MPI_Bcast(type.data(), (PetscMPIInt)len, MPI_CHAR, 0, comm));
-    PetscCallMPI(MPI_Bcast(&first, (PetscMPIInt)sizeof first, MPI_BYTE, 0, comm));
   }
   PetscFunctionReturn(0);
 }
@@ -542,12 +536,11 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
     if (rank == 0) PetscCall(FastenerRows(comm, joints, &rows, &firsts));
     PetscFunctionReturn(0);
   }));
-  PetscCall(BcastJointTypes(comm, &firsts));
-  std::map<std::string, BoltnetJointParams> types;
-  for (const auto &[type, first] : firsts) PetscCall(JointTypeFromOptions(comm, a, type, first, &types[type], scene));
+  std::vector<BoltnetJointParams> types;
+  PetscCall(SceneJointTypes(comm, a, &firsts, &types, scene));
   PetscCall(Collective(comm, "reading the scene", [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
-    for (const FastenerRow &f : rows) PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &types.at(firsts[f.type].first), f.n, f.t, f.positioned ? f.pos : nullptr));
+    for (const FastenerRow &f : rows) PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &types[f.type], f.n, f.t, f.positioned ? f.pos : nullptr));
     PetscFunctionReturn(0);
   }));
   if (rank == 0) PetscCall(PetscInfo(nullptr, "Read the fastener table's %zu rows on this rank\n", rows.size()));

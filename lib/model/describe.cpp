@@ -137,8 +137,8 @@ PetscErrorCode AddBC(BoltnetAssembly a, const char *where, PetscInt patch, const
       const PetscInt   pos = a->model.Find(patch);
       const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;
       PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on set '%s': patch %" PetscInt_FMT " is not a shell patch", set, patch);
-      // A part read later is checked when it is read (patch/layout.cpp).
-      PetscCheck(sp->read || sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
+      // A part read later, or held by rank 0 alone, is checked where it is laid out (patch/layout.cpp).
+      PetscCheck(sp->read || sp->on_rank0 || sp->mesh.node_sets.count(set), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", patch, set);
     }
     a->model.bcs.push_back(BCDesc{patch, set ? set : "", dof, kind, value});
     PetscFunctionReturn(0);
@@ -180,6 +180,24 @@ PetscErrorCode AssemblyAddShellRead(BoltnetAssembly a, PetscInt id, std::int64_t
   sp.read       = std::move(read);
   sp.size       = size;
   sp.material   = material;
+  PetscFunctionReturn(0);
+}
+
+PetscErrorCode AssemblyAddShellOnRank0(BoltnetAssembly a, PetscInt id, const std::array<double, 3> &x0, std::int64_t size, ShellMesh &&mesh, const shell::ShellMaterial &material)
+{
+  PetscMPIInt rank;
+  PetscFunctionBeginUser;
+  PetscCall(CheckNotSetUp(a, "AssemblyAddShellOnRank0"));
+  PetscCallMPI(MPI_Comm_rank(a->comm, &rank));
+  PetscCheck(rank || !mesh.elems.empty(), a->comm, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one element", id);
+  PetscCheck(rank || (std::int64_t)mesh.x.size() == size, a->comm, PETSC_ERR_PLIB, "Shell patch %" PetscInt_FMT ": %zu nodes given as %lld", id, mesh.x.size(), (long long)size);
+  const PetscInt pos = (PetscInt)a->model.parts.size();
+  a->model.parts.push_back(PartDesc{id, PatchKind::Shell, x0});
+  ShellPart &sp = a->model.shells[pos];
+  if (rank == 0) sp.mesh = std::move(mesh);
+  sp.on_rank0 = true;
+  sp.size     = size;
+  sp.material = material;
   PetscFunctionReturn(0);
 }
 
@@ -277,6 +295,7 @@ PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly a, PetscInt patch, cons
     ShellPart     *sp  = a->model.shells.count(pos) ? &a->model.shells[pos] : nullptr;
     PetscCheck(sp, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is not a shell patch", name, patch);
     PetscCheck(!sp->read, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT " is read from its scene when the model is laid out; give the set in its mesh", name, patch);
+    PetscCheck(!sp->on_rank0, a->comm, PETSC_ERR_USER_INPUT, "Node set '%s': patch %" PetscInt_FMT "'s mesh is held by rank 0 alone; give the set in its mesh", name, patch);
     std::vector<int> add; // checked in full before the set changes: a refused call changes nothing
     add.reserve((size_t)n);
     for (PetscInt i = 0; i < n; ++i) {

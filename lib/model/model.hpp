@@ -37,6 +37,10 @@ struct ShellPart {
   // Gmsh file declares). Empty `read`: the mesh was given whole (the C API, a Nastran deck).
   std::function<PetscErrorCode(ShellMesh *)> read;
   std::int64_t                               size = 0;
+  // A part that rank 0 alone was given (a Nastran deck is read there: io/nastran.cpp): `mesh` is
+  // empty on the other ranks and `size` is its node count; rank 0 sends the mesh to the rank that
+  // lays the part out (patch/layout_steps.hpp, SendRank0Meshes) and keeps no copy.
+  bool on_rank0 = false;
 };
 
 struct JointDesc {

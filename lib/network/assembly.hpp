@@ -189,6 +189,11 @@ PetscErrorCode AssemblyAddShell(BoltnetAssembly a, PetscInt id, ShellMesh &&mesh
 // A shell part whose mesh only the rank that lays it out reads, by read() (ShellPart::read): the
 // scene's plates and Gmsh parts. `size` weighs it in the assignment of parts to ranks.
 PetscErrorCode AssemblyAddShellRead(BoltnetAssembly a, PetscInt id, std::int64_t size, std::function<PetscErrorCode(ShellMesh *)> read, const shell::ShellMaterial &material);
+// A shell part whose mesh rank 0 alone holds (ShellPart::on_rank0): a Nastran deck's, read on rank
+// 0 (io/nastran.cpp). Called on every rank with the same id, first node x0, node count and section;
+// `mesh` (node sets included) is the mesh on rank 0 and ignored elsewhere. Rank 0 sends it to the
+// rank that lays the part out.
+PetscErrorCode AssemblyAddShellOnRank0(BoltnetAssembly a, PetscInt id, const std::array<double, 3> &x0, std::int64_t size, ShellMesh &&mesh, const shell::ShellMaterial &material);
 // A linear spring joint with a full stiffness K (6 x 6, row major, in the joint frame n, t1,
 // t2 = n x t1: Params::full) acting at x (model/describe.cpp). With at_a and at_b (both or
 // neither), side a attaches at the point at_a (node coupling: the part's node nearest it; a rigid

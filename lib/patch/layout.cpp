@@ -71,6 +71,7 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
   std::vector<PetscInt>  jindex; // each joint of the share: its position in the model
   PetscInt               njoint = 0;
   PetscCall(ShareJoints(comm, holder, m, &all, &jindex, &njoint));
+  PetscCall(Collective(comm, "sending rank 0's meshes", [&] { return SendRank0Meshes(comm, holder, m); }));
 
   // The shell parts this rank lays out, read (ShellPart::read) and checked, as patches before any
   // cut; of the others, what a stub needs.

@@ -62,6 +62,11 @@ std::vector<PetscMPIInt> AssignParts(const Model &m, PetscMPIInt size);
 // network's graph. Every rank learns the number of joints.
 PetscErrorCode ShareJoints(MPI_Comm comm, const std::vector<PetscMPIInt> &holder, Model &m, std::vector<JointDesc> *all, std::vector<PetscInt> *index, PetscInt *njoint);
 
+// The meshes that rank 0 alone holds (ShellPart::on_rank0: a Nastran deck's parts) sent to the
+// ranks that lay them out (`holder`), one part at a time, rank 0 dropping each once sent: on return
+// each such part's holder has its mesh, node sets and directors in ShellPart::mesh.
+PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &holder, Model &m);
+
 // What the holders of the parts found, given to every rank: each patch's record (the nodes its
 // vertex carries, all its nodes, whether condensed), each seam's ends, a stub (part, section,
 // condensed) for every shell patch held elsewhere, the fingerprint. Each joint's attachment on shell

@@ -2,12 +2,15 @@
 // each shell part, each holder's joints (sent by rank 0), and the records every rank needs of what
 // the holders laid out.
 #include "patch/layout_steps.hpp"
+#include "core/guard.hpp"
 #include "core/hash.hpp"
 
 #include <algorithm>
 #include <climits>
 #include <cstring>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 
 namespace boltnet {
@@ -19,7 +22,7 @@ std::vector<PetscMPIInt> AssignParts(const Model &m, PetscMPIInt size)
 {
   std::vector<PetscMPIInt> holder(m.parts.size(), -1);
   std::vector<std::pair<std::size_t, PetscInt>> bysize;
-  for (const auto &[pos, sp] : m.shells) bysize.push_back({sp.read ? (std::size_t)sp.size : sp.mesh.x.size(), pos});
+  for (const auto &[pos, sp] : m.shells) bysize.push_back({sp.read || sp.on_rank0 ? (std::size_t)sp.size : sp.mesh.x.size(), pos});
   std::stable_sort(bysize.begin(), bysize.end(), [](const auto &a, const auto &b) { return a.first > b.first; });
   std::vector<std::size_t> load(size, 0);
   for (const auto &[n, pos] : bysize) {
@@ -86,6 +89,134 @@ PetscErrorCode ShareJoints(MPI_Comm comm, const std::vector<PetscMPIInt> &holder
   std::int64_t sides = 0;
   for (const JointDesc &d : m.joints) sides += (holder[m.Find(d.part_a)] == rank) + (holder[m.Find(d.part_b)] == rank);
   PetscCall(PetscInfo(nullptr, "Attaching %zu of %" PetscInt_FMT " joints (%lld joint sides) on this rank's shell parts\n", m.joints.size(), *njoint, (long long)sides));
+  PetscFunctionReturn(0);
+}
+
+namespace {
+
+// A mesh as bytes (SendRank0Meshes): the counts of nodes, elements, directors and node sets, the
+// coordinates, elements and directors, then each set's name and nodes.
+class Packer {
+public:
+  std::vector<char> bytes;
+  template <class T>
+  void Put(const T *v, std::size_t n)
+  {
+    static_assert(std::is_trivially_copyable<T>::value, "packed as bytes");
+    const char *p = reinterpret_cast<const char *>(v);
+    bytes.insert(bytes.end(), p, p + n * sizeof(T));
+  }
+  void Put(std::int64_t n) { Put(&n, 1); }
+};
+
+class Unpacker {
+public:
+  explicit Unpacker(const std::vector<char> &b) : bytes_(b) {}
+  template <class T>
+  void Get(T *v, std::size_t n)
+  {
+    const std::size_t len = n * sizeof(T);
+    if (at_ + len > bytes_.size()) throw std::length_error("a mesh message ends early");
+    std::memcpy(static_cast<void *>(v), bytes_.data() + at_, len);
+    at_ += len;
+  }
+  std::int64_t Int()
+  {
+    std::int64_t n;
+    Get(&n, 1);
+    return n;
+  }
+
+private:
+  const std::vector<char> &bytes_;
+  std::size_t              at_ = 0;
+};
+
+std::vector<char> PackMesh(const ShellMesh &m)
+{
+  Packer p;
+  p.Put((std::int64_t)m.x.size());
+  p.Put((std::int64_t)m.elems.size());
+  p.Put((std::int64_t)m.directors.size());
+  p.Put((std::int64_t)m.node_sets.size());
+  p.Put(m.x.data(), m.x.size());
+  p.Put(m.elems.data(), m.elems.size());
+  p.Put(m.directors.data(), m.directors.size());
+  for (const auto &[name, nodes] : m.node_sets) {
+    p.Put((std::int64_t)name.size());
+    p.Put(name.data(), name.size());
+    p.Put((std::int64_t)nodes.size());
+    p.Put(nodes.data(), nodes.size());
+  }
+  return std::move(p.bytes);
+}
+
+ShellMesh UnpackMesh(const std::vector<char> &bytes)
+{
+  Unpacker     u(bytes);
+  ShellMesh    m;
+  std::int64_t nx = u.Int(), ne = u.Int(), nd = u.Int(), ns = u.Int();
+  m.x.resize((std::size_t)nx);
+  m.elems.resize((std::size_t)ne);
+  m.directors.resize((std::size_t)nd);
+  u.Get(m.x.data(), m.x.size());
+  u.Get(m.elems.data(), m.elems.size());
+  u.Get(m.directors.data(), m.directors.size());
+  for (std::int64_t s = 0; s < ns; ++s) {
+    std::string name((std::size_t)u.Int(), '\0');
+    u.Get(name.data(), name.size());
+    std::vector<int> &nodes = m.node_sets[name];
+    nodes.resize((std::size_t)u.Int());
+    u.Get(nodes.data(), nodes.size());
+  }
+  return m;
+}
+
+// Bytes in pieces of at most 1 GiB: one MPI message counts them in int.
+constexpr std::size_t kPiece = std::size_t(1) << 30;
+
+} // namespace
+
+PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &holder, Model &m)
+{
+  PetscMPIInt  rank;
+  std::int64_t parts = 0, bytes = 0;
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  for (auto &[pos, sp] : m.shells) {
+    const PetscMPIInt h = holder[pos];
+    if (!sp.on_rank0 || h == 0 || (rank != 0 && rank != h)) continue;
+    std::vector<char> b;
+    std::int64_t      len = -1; // -1: rank 0 could not pack it (out of memory); its holder is told
+    PetscErrorCode    ierr = 0;
+    if (rank == 0) {
+      ierr = Guard("SendRank0Meshes", [&] {
+        b = PackMesh(sp.mesh);
+        return PetscErrorCode(0);
+      });
+      if (!ierr) len = (std::int64_t)b.size();
+      sp.mesh = ShellMesh{}; // its memory released
+      PetscCallMPI(MPI_Send(&len, 1, MPI_INT64_T, h, 0, comm));
+      PetscCall(ierr);
+      for (std::size_t at = 0; at < b.size(); at += kPiece) PetscCallMPI(MPI_Send(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, h, 0, comm));
+    } else {
+      PetscCallMPI(MPI_Recv(&len, 1, MPI_INT64_T, 0, 0, comm, MPI_STATUS_IGNORE));
+      PetscCheck(len >= 0, PETSC_COMM_SELF, PETSC_ERR_MEM, "Shell patch %" PetscInt_FMT ": rank 0 could not send its mesh (out of memory)", m.parts[pos].id);
+      PetscCall(Guard("SendRank0Meshes", [&] {
+        b.resize((std::size_t)len);
+        return PetscErrorCode(0);
+      }));
+      for (std::size_t at = 0; at < b.size(); at += kPiece) PetscCallMPI(MPI_Recv(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE));
+      PetscCall(Guard("SendRank0Meshes", [&] {
+        sp.mesh = UnpackMesh(b);
+        return PetscErrorCode(0);
+      }));
+    }
+    ++parts;
+    bytes += len;
+  }
+  if (parts && rank == 0) PetscCall(PetscInfo(nullptr, "Sent %lld shell part meshes (%lld bytes) to the ranks that lay them out\n", (long long)parts, (long long)bytes));
+  if (parts && rank != 0) PetscCall(PetscInfo(nullptr, "Received %lld shell part meshes (%lld bytes) from rank 0\n", (long long)parts, (long long)bytes));
   PetscFunctionReturn(0);
 }
 
