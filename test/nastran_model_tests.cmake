@@ -221,3 +221,17 @@ foreach(sub 1 2)
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_deck_on_rank0_np1/subcase-${sub}/joints.csv ${BOLTNET_OUT}/nastran_deck_on_rank0_np3/subcase-${sub}/joints.csv 1e-9)
   set_tests_properties(nastran_wingbox_${sub}_ranks_1_vs_3 PROPERTIES FIXTURES_REQUIRED "nastran_deck_on_rank0_np1;nastran_deck_on_rank0_np3")
 endforeach()
+# A larger box from the same generator (5,319 grids, 5,880 shell elements and 156 CBUSH; ids in blocks of
+# 10,000 grids and 1,000 elements), read against its manifest and run on 2 ranks the same way.
+set(_wbm ${BOLTNET_OUT}/nastran-wingbox-medium)
+add_test(NAME make_nastran_wingbox_medium COMMAND ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-nastran-wingbox ${_wbm} --format small --nx 30 --ny 40 --nz 24)
+set_tests_properties(make_nastran_wingbox_medium PROPERTIES FIXTURES_SETUP nastran_wingbox_medium)
+add_test(NAME nastran_wingbox_medium_summary
+  COMMAND sh -c "\"$0\" -nastran_deck \"$1/wingbox-small.bdf\" > \"$1/small.txt\" && ${BOLTNET_PYTHON} \"$2\" \"$1/manifest.json\" \"$1/small.txt\""
+          $<TARGET_FILE:nastran_summary> ${_wbm} ${CMAKE_CURRENT_SOURCE_DIR}/check_nastran_wingbox.py)
+set_tests_properties(nastran_wingbox_medium_summary PROPERTIES FIXTURES_REQUIRED nastran_wingbox_medium ENVIRONMENT "${BOLTNET_ENV}")
+add_test(NAME nastran_deck_on_rank0_medium_np2
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${_wbm}/wingbox-small.bdf 2
+          -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_wbm}/wingbox-small.bdf
+          -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_medium_np2 -load_max 1 -load_steps 1 -info)
+set_tests_properties(nastran_deck_on_rank0_medium_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox_medium)
