@@ -163,11 +163,13 @@ PetscErrorCode CheckpointIdentify(BoltnetAssembly a, const std::string &scene, C
     id->bcs    = bcs.Hex();
     return PetscErrorCode(0);
   }));
-  { // the joints are rank 0's (a scene's fastener table is read there alone: io/scene.cpp)
+  // The joints are rank 0's (a scene's fastener table is read there alone: io/scene.cpp), and so
+  // are the meshes of parts given to rank 0 alone (ShellPart::on_rank0): rank 0's hashes count.
+  for (std::string *h : {&id->joints, &id->parts}) {
     char hex[64] = {0};
-    std::strncpy(hex, id->joints.c_str(), sizeof hex - 1);
+    std::strncpy(hex, h->c_str(), sizeof hex - 1);
     PetscCallMPI(MPI_Bcast(hex, (PetscMPIInt)sizeof hex, MPI_CHAR, 0, a->comm));
-    id->joints = hex;
+    *h = hex;
   }
   PetscCall(PetscFree(all));
   PetscFunctionReturn(0);

@@ -2,12 +2,12 @@
 // each shell part, each holder's joints (sent by rank 0), and the records every rank needs of what
 // the holders laid out.
 #include "patch/layout_steps.hpp"
-#include "core/guard.hpp"
 #include "core/hash.hpp"
 
 #include <algorithm>
 #include <climits>
 #include <cstring>
+#include <new>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -177,44 +177,55 @@ constexpr std::size_t kPiece = std::size_t(1) << 30;
 
 } // namespace
 
+// Each part is a short exchange between rank 0 and the part's holder: its length (-1: rank 0 could
+// not pack it), the holder's answer (1: ready to take it), then the bytes. Neither side leaves the
+// loop on a failure (out of memory): it keeps its first error, skips the part's bytes, and goes on,
+// so that every exchange is completed and the error is raised after it (by Collective, on every
+// rank).
 PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &holder, Model &m)
 {
   PetscMPIInt  rank;
   std::int64_t parts = 0, bytes = 0;
+  std::string    failed; // the first failure on this rank
+  PetscErrorCode code = PETSC_ERR_MEM;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  // The C++ work of an exchange (packing, allocating, unpacking): false if it threw.
+  auto attempt = [&](PetscInt id, const char *what, auto &&work) {
+    try {
+      work();
+      return true;
+    } catch (const std::exception &e) {
+      const bool memory = dynamic_cast<const std::bad_alloc *>(&e) != nullptr;
+      if (failed.empty()) failed = "Shell patch " + std::to_string(id) + ": " + what + " its mesh: " + (memory ? std::string("out of memory") : std::string(e.what())), code = memory ? PETSC_ERR_MEM : PETSC_ERR_PLIB;
+      return false;
+    }
+  };
   for (auto &[pos, sp] : m.shells) {
     const PetscMPIInt h = holder[pos];
+    const PetscInt    id = m.parts[pos].id;
     if (!sp.on_rank0 || h == 0 || (rank != 0 && rank != h)) continue;
     std::vector<char> b;
-    std::int64_t      len = -1; // -1: rank 0 could not pack it (out of memory); its holder is told
-    PetscErrorCode    ierr = 0;
+    std::int64_t      len   = -1;
+    int               ready = 0;
     if (rank == 0) {
-      ierr = Guard("SendRank0Meshes", [&] {
-        b = PackMesh(sp.mesh);
-        return PetscErrorCode(0);
-      });
-      if (!ierr) len = (std::int64_t)b.size();
+      if (attempt(id, "rank 0 could not pack", [&] { b = PackMesh(sp.mesh); })) len = (std::int64_t)b.size();
       sp.mesh = ShellMesh{}; // its memory released
       PetscCallMPI(MPI_Send(&len, 1, MPI_INT64_T, h, 0, comm));
-      PetscCall(ierr);
-      for (std::size_t at = 0; at < b.size(); at += kPiece) PetscCallMPI(MPI_Send(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, h, 0, comm));
+      if (len >= 0) PetscCallMPI(MPI_Recv(&ready, 1, MPI_INT, h, 0, comm, MPI_STATUS_IGNORE));
+      for (std::size_t at = 0; ready && at < b.size(); at += kPiece) PetscCallMPI(MPI_Send(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, h, 0, comm));
     } else {
       PetscCallMPI(MPI_Recv(&len, 1, MPI_INT64_T, 0, 0, comm, MPI_STATUS_IGNORE));
-      PetscCheck(len >= 0, PETSC_COMM_SELF, PETSC_ERR_MEM, "Shell patch %" PetscInt_FMT ": rank 0 could not send its mesh (out of memory)", m.parts[pos].id);
-      PetscCall(Guard("SendRank0Meshes", [&] {
-        b.resize((std::size_t)len);
-        return PetscErrorCode(0);
-      }));
-      for (std::size_t at = 0; at < b.size(); at += kPiece) PetscCallMPI(MPI_Recv(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE));
-      PetscCall(Guard("SendRank0Meshes", [&] {
-        sp.mesh = UnpackMesh(b);
-        return PetscErrorCode(0);
-      }));
+      if (len < 0) continue; // rank 0 keeps the error
+      ready = attempt(id, "this rank could not take", [&] { b.resize((std::size_t)len); }) ? 1 : 0;
+      PetscCallMPI(MPI_Send(&ready, 1, MPI_INT, 0, 0, comm));
+      for (std::size_t at = 0; ready && at < b.size(); at += kPiece) PetscCallMPI(MPI_Recv(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE));
+      if (ready) attempt(id, "this rank could not unpack", [&] { sp.mesh = UnpackMesh(b); });
     }
-    ++parts;
-    bytes += len;
+    parts += ready;
+    bytes += ready ? len : 0;
   }
+  PetscCheck(failed.empty(), PETSC_COMM_SELF, code, "%s", failed.c_str());
   if (parts && rank == 0) PetscCall(PetscInfo(nullptr, "Sent %lld shell part meshes (%lld bytes) to the ranks that lay them out\n", (long long)parts, (long long)bytes));
   if (parts && rank != 0) PetscCall(PetscInfo(nullptr, "Received %lld shell part meshes (%lld bytes) from rank 0\n", (long long)parts, (long long)bytes));
   PetscFunctionReturn(0);
