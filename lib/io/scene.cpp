@@ -332,25 +332,31 @@ PetscErrorCode FastenerRows(MPI_Comm comm, const Table &joints, std::vector<Fast
 PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const char what[], std::string *text, bool broadcast)
 {
   PetscMPIInt rank;
-  long long   len = -1; // -1: cannot be read; -2: larger than limits::kMaxInputBytes
+  long long   len = -1; // -1: cannot be read; -2: larger than limits::kMaxInputBytes; -3: no memory
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  if (rank == 0) {
-    PetscCall(Input(PETSC_COMM_SELF, "reading the scene", [&] {
+  if (rank == 0) { // what fails here is told to every rank through len, so that none waits alone
+    try {
       std::ifstream in(path, std::ios::binary);
-      if (!in) return;
-      // Read in pieces and stop past the limit: a huge file, or a device that never ends, is refused
-      // before it is held in memory.
-      std::string buf(1 << 20, '\0');
-      text->clear();
-      while (in && (long long)text->size() <= limits::kMaxInputBytes) {
-        in.read(&buf[0], (std::streamsize)buf.size());
-        text->append(buf, 0, (size_t)in.gcount());
+      if (in) {
+        // Read in pieces and stop past the limit: a huge file, or a device that never ends, is
+        // refused before it is held in memory.
+        std::string buf(1 << 20, '\0');
+        text->clear();
+        while (in && (long long)text->size() <= limits::kMaxInputBytes) {
+          in.read(&buf[0], (std::streamsize)buf.size());
+          text->append(buf, 0, (size_t)in.gcount());
+        }
+        len = in.bad() ? -1 : (long long)text->size() > limits::kMaxInputBytes ? -2 : (long long)text->size();
       }
-      len = in.bad() ? -1 : (long long)text->size() > limits::kMaxInputBytes ? -2 : (long long)text->size();
-    }));
+    } catch (const std::bad_alloc &) {
+      len = -3;
+    } catch (const std::exception &) {
+      len = -1;
+    }
   }
   PetscCallMPI(MPI_Bcast(&len, 1, MPI_LONG_LONG, 0, comm));
+  PetscCheck(len != -3, comm, PETSC_ERR_MEM, "Out of memory while reading the %s file '%s'", what, path.c_str());
   PetscCheck(len != -2, comm, PETSC_ERR_USER_INPUT, "The %s file '%s' is larger than %lld bytes (docs/scenes.md, \"Limits\")", what, path.c_str(), (long long)limits::kMaxInputBytes);
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot read the %s file '%s'", what, path.c_str());
   if (!broadcast) PetscFunctionReturn(0); // the other ranks' text stays empty
