@@ -176,7 +176,7 @@ boltnet_expect(interface_solve_bad 1 --fail --match "auto" --match "direct" --ma
 foreach(ranks 1 2 3)
   boltnet_expect(log_view_stages ${ranks} --match "Boltnet Set-up: " --match "Boltnet Condense: [1-9]" --match "Boltnet Solve: [1-9]"
                  --match "Boltnet Output: [1-9]" --match "BoltnetCondense" --match "BoltnetRecover"
-                 --match "BoltnetPatchMatrix +[1-9]" --match "BoltnetSchur +[1-9]"
+                 --match "BoltnetPatchMatrix +[1-9]" --match "BoltnetSchur +[1-9]" --match "BoltnetElementResults +[1-9]"
                  -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3b.yaml
                  -output_dir ${BOLTNET_OUT}/log_view_stages_np${ranks} -log_view -patch_condense true)
 endforeach()

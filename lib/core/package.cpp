@@ -52,6 +52,7 @@ PetscErrorCode BoltnetInitializePackage(void)
   PetscCall(PetscLogEventRegister("BoltnetInterfaceSolve", events.classid, &events.interface_solve));
   PetscCall(PetscLogEventRegister("BoltnetRecover", events.classid, &events.recover));
   PetscCall(PetscLogEventRegister("BoltnetOutput", events.classid, &events.output));
+  PetscCall(PetscLogEventRegister("BoltnetElementResults", events.classid, &events.element_results));
   PetscCall(PetscLogEventRegister("BoltnetJointOutput", events.classid, &events.joint_output));
   PetscCall(PetscLogEventRegister("BoltnetJointGather", events.classid, &events.joint_gather));
   PetscCall(PetscLogStageRegister("Boltnet Set-up", &events.setup_stage));

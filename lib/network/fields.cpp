@@ -3,6 +3,7 @@
 // element results and joint lines on the rank that owns them.
 #include "network/fields.hpp"
 #include "core/guard.hpp"
+#include "core/log.hpp"
 #include "network/internal.hpp"
 
 #include <algorithm>
@@ -335,6 +336,7 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
   PetscCall(VecScatterEnd(m.ghost_scatter, f->dof_natural, m.ghost_dof, INSERT_VALUES, SCATTER_FORWARD));
   const PetscScalar *gd;
   PetscCall(VecGetArrayRead(m.ghost_dof, &gd));
+  PetscCall(PetscLogEventBegin(Events().element_results, 0, 0, 0, 0));
   PetscCall(Collective(a->comm, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     // The elements do not change between steps: their condensed modes, most of the results' work,
@@ -361,6 +363,7 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
     }
     PetscFunctionReturn(0);
   }));
+  PetscCall(PetscLogEventEnd(Events().element_results, 0, 0, 0, 0));
   PetscCall(VecRestoreArrayRead(m.ghost_dof, &gd));
   PetscFunctionReturn(0);
 }
