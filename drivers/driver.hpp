@@ -4,6 +4,7 @@
 #pragma once
 #include "core/errors.hpp"
 #include "io/io.hpp"
+#include "ooc_files.hpp"
 #include "stack.hpp"
 
 #include <petscsys.h>
@@ -43,7 +44,7 @@ inline std::string DescribeError(const ErrorLog &log)
 
 // One line on rank 0 and a clean PetscFinalize on every rank when every rank stopped on the error;
 // the message of each rank that did and MPI_Abort otherwise (after kErrorAgreeSeconds).
-inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log)
+inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log, const OocFiles &ooc, bool handler)
 {
   const std::string msg = DescribeError(log);
   int               rank = 0, done = 0;
@@ -58,6 +59,7 @@ inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log)
   if (!done) {
     std::fprintf(stderr, "%s: error (rank %d): %s\n", program, rank, msg.c_str());
     std::fflush(stderr);
+    OocFilesRemove(ooc); // MPI_Abort ends the factorisations without MUMPS's own clean-up
     MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
   }
@@ -66,7 +68,9 @@ inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log)
   PetscOptionsClearValue(nullptr, "-options_left");
   MPI_Comm_free(&agree);
   PetscPopErrorHandler();
+  if (handler) PetscPopSignalHandler();
   PetscFinalize();
+  OocFilesRemove(ooc); // those of a factorisation that the error left undestroyed
   return 1;
 }
 
@@ -87,6 +91,14 @@ int DriverMain(const char *program, int *argc, char ***argv, const char *help, R
         PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "%s: warning: the stack limit is %s and the hard limit (ulimit -H -s) keeps it there: MUMPS's parallel factorisation of a large model may overflow it (docs/performance.md, \"Stack\")\n", program, mb(stack.after).c_str()))
       return 1;
   }
+  // MUMPS's out-of-core files named per process and removed when a signal or an error stops it
+  // (ooc_files.hpp), unless -no_signal_handler asks for PETSc's handlers to stay out of the way.
+  const OocFiles ooc = OocFilesSetUp();
+  PetscBool      nohandler = PETSC_FALSE;
+  if (PetscOptionsHasName(nullptr, nullptr, "-no_signal_handler", &nohandler)) return 1;
+  const bool handler = !nohandler;
+  if (handler && PetscPushSignalHandler(OocFilesSignalHandler, const_cast<OocFiles *>(&ooc))) return 1;
+  if (handler) OocFilesCatchStops(ooc);
   if (PetscPushErrorHandler(CaptureErrorHandler, &log) || MPI_Comm_dup(PETSC_COMM_WORLD, &agree)) return 1;
   PetscErrorCode ierr;
   try {
@@ -98,9 +110,10 @@ int DriverMain(const char *program, int *argc, char ***argv, const char *help, R
     log.messages.push_back(std::string("C++ exception: ") + e.what());
     ierr = PETSC_ERR_LIB;
   }
-  if (ierr) return ExitOnError(program, agree, log);
+  if (ierr) return ExitOnError(program, agree, log, ooc, handler);
   MPI_Comm_free(&agree);
   PetscPopErrorHandler();
+  if (handler && PetscPopSignalHandler()) return 1;
   if (PetscFinalize()) return 1;
   return exitcode;
 }

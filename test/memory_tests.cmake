@@ -158,3 +158,20 @@ boltnet_expect(factor_memory_estimate_user 1 --status 3
 boltnet_expect(factor_memory_negative 1 --fail --max-lines 1 --match "-interface_memory_mb -5\\.? must be >= 0" --
   $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/factor_memory_negative
   -output_fields false -interface_memory_mb -5)
+# A run stopped by SIGTERM (a scheduler's time limit, timeout(1), mpirun passing on Ctrl-C) removes
+# its factors from disk (drivers/ooc_files.hpp): the small plate grid with every factor out of core,
+# stopped once MUMPS has written its files, on 1 rank and through mpirun on 2, leaves none of them;
+# with the user's own MUMPS_OOC_PREFIX its files stay (the control: nobody else removes them).
+foreach(mode_ranks "ours;1" "ours;2" "user;1")
+  list(GET mode_ranks 0 mode)
+  list(GET mode_ranks 1 ranks)
+  set(_run $<TARGET_FILE:boltnet_driver>)
+  if(ranks GREATER 1)
+    set(_run ${BOLTNET_MPIRUN} ${ranks} --oversubscribe -x MUMPS_OOC_TMPDIR -x MUMPS_OOC_PREFIX $<TARGET_FILE:boltnet_driver>)
+  endif()
+  add_test(NAME ooc_files_removed_on_sigterm_${mode}_np${ranks}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check_ooc_cleanup.sh ${mode} ${BOLTNET_OUT}/ooc_${mode}_np${ranks} --
+            ${_run} -scene ${BOLTNET_OUT}/grid/small.yaml -output_dir ${BOLTNET_OUT}/ooc_${mode}_np${ranks}_out
+            -output_fields false -mat_mumps_icntl_22 1 -load_steps 500)
+  set_tests_properties(ooc_files_removed_on_sigterm_${mode}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
+endforeach()
