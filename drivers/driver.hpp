@@ -44,7 +44,7 @@ inline std::string DescribeError(const ErrorLog &log)
 
 // One line on rank 0 and a clean PetscFinalize on every rank when every rank stopped on the error;
 // the message of each rank that did and MPI_Abort otherwise (after kErrorAgreeSeconds).
-inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log, const OocFiles &ooc, bool handler)
+inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log, bool handler)
 {
   const std::string msg = DescribeError(log);
   int               rank = 0, done = 0;
@@ -59,7 +59,7 @@ inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log,
   if (!done) {
     std::fprintf(stderr, "%s: error (rank %d): %s\n", program, rank, msg.c_str());
     std::fflush(stderr);
-    OocFilesRemove(ooc); // MPI_Abort ends the factorisations without MUMPS's own clean-up
+    OocFilesRemove(); // MPI_Abort ends the factorisations without MUMPS's own clean-up
     MPI_Abort(MPI_COMM_WORLD, 1);
     return 1;
   }
@@ -70,7 +70,8 @@ inline int ExitOnError(const char *program, MPI_Comm agree, const ErrorLog &log,
   PetscPopErrorHandler();
   if (handler) PetscPopSignalHandler();
   PetscFinalize();
-  OocFilesRemove(ooc); // those of a factorisation that the error left undestroyed
+  OocFilesRemove(); // those of a factorisation that the error left undestroyed
+  OocFilesRelease();
   return 1;
 }
 
@@ -80,6 +81,7 @@ template <class Run>
 int DriverMain(const char *program, int *argc, char ***argv, const char *help, Run run)
 {
   int      exitcode = 0;
+  bool     handler  = false; // boltnet's signal handlers installed (ooc_files.hpp)
   ErrorLog log;
   MPI_Comm agree = MPI_COMM_NULL;
   const StackLimit stack = RaiseStackLimit(); // before any work: MUMPS's recursion (stack.hpp)
@@ -91,14 +93,18 @@ int DriverMain(const char *program, int *argc, char ***argv, const char *help, R
         PetscFPrintf(PETSC_COMM_WORLD, PETSC_STDERR, "%s: warning: the stack limit is %s and the hard limit (ulimit -H -s) keeps it there: MUMPS's parallel factorisation of a large model may overflow it (docs/performance.md, \"Stack\")\n", program, mb(stack.after).c_str()))
       return 1;
   }
-  // MUMPS's out-of-core files named per process and removed when a signal or an error stops it
-  // (ooc_files.hpp), unless -no_signal_handler asks for PETSc's handlers to stay out of the way.
-  const OocFiles ooc = OocFilesSetUp();
-  PetscBool      nohandler = PETSC_FALSE;
-  if (PetscOptionsHasName(nullptr, nullptr, "-no_signal_handler", &nohandler)) return 1;
-  const bool handler = !nohandler;
-  if (handler && PetscPushSignalHandler(OocFilesSignalHandler, const_cast<OocFiles *>(&ooc))) return 1;
-  if (handler) OocFilesCatchStops(ooc);
+  // MUMPS's out-of-core files named per process and removed when an error or a signal stops it
+  // (ooc_files.hpp); -no_signal_handler leaves the signals to their defaults, as it does PETSc's.
+  {
+    char      dir[PETSC_MAX_PATH_LEN] = "";
+    PetscBool nohandler = PETSC_FALSE;
+    if (PetscOptionsGetString(nullptr, nullptr, "-mat_mumps_ooc_tmpdir", dir, sizeof dir, nullptr)) return 1;
+    if (PetscOptionsGetBool(nullptr, nullptr, "-no_signal_handler", &nohandler, nullptr)) return 1;
+    OocFilesSetUp(dir);
+    handler = !nohandler;
+  }
+  if (handler && PetscPushSignalHandler(OocFilesSignalHandler, nullptr)) return 1;
+  if (handler) OocFilesCatchStops();
   if (PetscPushErrorHandler(CaptureErrorHandler, &log) || MPI_Comm_dup(PETSC_COMM_WORLD, &agree)) return 1;
   PetscErrorCode ierr;
   try {
@@ -110,12 +116,13 @@ int DriverMain(const char *program, int *argc, char ***argv, const char *help, R
     log.messages.push_back(std::string("C++ exception: ") + e.what());
     ierr = PETSC_ERR_LIB;
   }
-  if (ierr) return ExitOnError(program, agree, log, ooc, handler);
+  if (ierr) return ExitOnError(program, agree, log, handler);
   MPI_Comm_free(&agree);
   PetscPopErrorHandler();
   if (handler && PetscPopSignalHandler()) return 1;
-  if (PetscFinalize()) return 1;
-  return exitcode;
+  const PetscErrorCode fin = PetscFinalize();
+  OocFilesRelease();
+  return fin ? 1 : exitcode;
 }
 
 } // namespace boltnet

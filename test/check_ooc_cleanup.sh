@@ -4,7 +4,7 @@
 # Runs COMMAND (the driver, or mpirun of it, with its factors on disk: -mat_mumps_icntl_22 1) in the
 # background with MUMPS_OOC_TMPDIR=DIR, waits until MUMPS has written files there (the reference
 # that there is something to remove: at most 300 s), sends SIGTERM to it and waits for it to end.
-# MODE ours: the driver names the files (boltnet<pid>_mumps_*), and none may be left.
+# MODE ours: the driver names the files (boltnet<host>_<pid>_mumps_*), and none may be left.
 # MODE user: the user's own MUMPS_OOC_PREFIX, whose files the driver must leave alone: some stay
 # (the control, which shows that a stopped run does leave files that nobody removes).
 set -u
@@ -22,6 +22,12 @@ for _ in $(seq 3000); do
 done
 written=$(compgen -G "$dir/$pattern" | wc -l)
 kill -TERM $pid 2> /dev/null
+for _ in $(seq 600); do kill -0 $pid 2> /dev/null || break; sleep 0.1; done
+if kill -0 $pid 2> /dev/null; then
+  pkill -KILL -P $pid; kill -KILL $pid
+  echo "check_ooc_cleanup: FAIL: the run did not end within 60 s of SIGTERM"
+  exit 1
+fi
 wait $pid
 status=$?
 left=$(compgen -G "$dir/$pattern" | wc -l)

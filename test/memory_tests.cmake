@@ -167,11 +167,11 @@ foreach(mode_ranks "ours;1" "ours;2" "user;1")
   list(GET mode_ranks 1 ranks)
   set(_run $<TARGET_FILE:boltnet_driver>)
   if(ranks GREATER 1)
-    set(_run ${BOLTNET_MPIRUN} ${ranks} --oversubscribe -x MUMPS_OOC_TMPDIR -x MUMPS_OOC_PREFIX $<TARGET_FILE:boltnet_driver>)
+    set(_run ${BOLTNET_MPIRUN} ${ranks} --oversubscribe -x MUMPS_OOC_TMPDIR $<TARGET_FILE:boltnet_driver>)
   endif()
   add_test(NAME ooc_files_removed_on_sigterm_${mode}_np${ranks}
     COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check_ooc_cleanup.sh ${mode} ${BOLTNET_OUT}/ooc_${mode}_np${ranks} --
             ${_run} -scene ${BOLTNET_OUT}/grid/small.yaml -output_dir ${BOLTNET_OUT}/ooc_${mode}_np${ranks}_out
             -output_fields false -mat_mumps_icntl_22 1 -load_steps 500)
-  set_tests_properties(ooc_files_removed_on_sigterm_${mode}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
+  set_tests_properties(ooc_files_removed_on_sigterm_${mode}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene TIMEOUT 600)
 endforeach()

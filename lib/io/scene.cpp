@@ -360,7 +360,14 @@ PetscErrorCode ReadFileCollective(MPI_Comm comm, const std::string &path, const 
   PetscCheck(len != -2, comm, PETSC_ERR_USER_INPUT, "The %s file '%s' is larger than %lld bytes (docs/scenes.md, \"Limits\")", what, path.c_str(), (long long)limits::kMaxInputBytes);
   PetscCheck(len >= 0, comm, PETSC_ERR_FILE_OPEN, "Cannot read the %s file '%s'", what, path.c_str());
   if (!broadcast) PetscFunctionReturn(0); // the other ranks' text stays empty
-  PetscCall(Input(comm, "reading the scene", [&] { text->resize((size_t)len); }));
+  int held = 1; // every rank can hold the text: agreed before the broadcast, so that none waits in it
+  try {
+    text->resize((size_t)len);
+  } catch (const std::bad_alloc &) {
+    held = 0;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &held, 1, MPI_INT, MPI_MIN, comm));
+  PetscCheck(held, comm, PETSC_ERR_MEM, "Out of memory while reading the %s file '%s'", what, path.c_str());
   PetscCallMPI(MPI_Bcast(text->data(), (PetscMPIInt)len, MPI_CHAR, 0, comm));
   PetscFunctionReturn(0);
 }

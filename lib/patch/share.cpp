@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <new>
 #include <numeric>
@@ -184,10 +185,10 @@ constexpr std::size_t kPiece = std::size_t(1) << 30;
 // rank).
 PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &holder, Model &m)
 {
-  PetscMPIInt  rank;
-  std::int64_t parts = 0, bytes = 0;
-  std::string    failed; // the first failure on this rank
-  PetscErrorCode code = PETSC_ERR_MEM;
+  PetscMPIInt    rank;
+  std::int64_t   parts = 0, bytes = 0;
+  char           failed[256] = ""; // the first failure on this rank (no allocation after a bad_alloc)
+  PetscErrorCode code        = PETSC_ERR_MEM;
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   // The C++ work of an exchange (packing, allocating, unpacking): false if it threw.
@@ -197,7 +198,10 @@ PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &ho
       return true;
     } catch (const std::exception &e) {
       const bool memory = dynamic_cast<const std::bad_alloc *>(&e) != nullptr;
-      if (failed.empty()) failed = "Shell patch " + std::to_string(id) + ": " + what + " its mesh: " + (memory ? std::string("out of memory") : std::string(e.what())), code = memory ? PETSC_ERR_MEM : PETSC_ERR_PLIB;
+      if (!failed[0]) {
+        std::snprintf(failed, sizeof failed, "Shell patch %lld: %s its mesh: %s", (long long)id, what, memory ? "out of memory" : e.what());
+        code = memory ? PETSC_ERR_MEM : PETSC_ERR_PLIB;
+      }
       return false;
     }
   };
@@ -225,7 +229,7 @@ PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &ho
     parts += ready;
     bytes += ready ? len : 0;
   }
-  PetscCheck(failed.empty(), PETSC_COMM_SELF, code, "%s", failed.c_str());
+  PetscCheck(!failed[0], PETSC_COMM_SELF, code, "%s", failed);
   if (parts && rank == 0) PetscCall(PetscInfo(nullptr, "Sent %lld shell part meshes (%lld bytes) to the ranks that lay them out\n", (long long)parts, (long long)bytes));
   if (parts && rank != 0) PetscCall(PetscInfo(nullptr, "Received %lld shell part meshes (%lld bytes) from rank 0\n", (long long)parts, (long long)bytes));
   PetscFunctionReturn(0);
