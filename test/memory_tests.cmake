@@ -160,9 +160,9 @@ boltnet_expect(factor_memory_negative 1 --fail --max-lines 1 --match "-interface
   -output_fields false -interface_memory_mb -5)
 # A run stopped by SIGTERM (a scheduler's time limit, timeout(1), mpirun passing on Ctrl-C) removes
 # its factors from disk (drivers/ooc_files.hpp): the small plate grid with every factor out of core,
-# stopped once MUMPS has written its files, on 1 rank and through mpirun on 2, leaves none of them;
+# stopped once MUMPS has written its files, on 1 rank and through mpirun on 2 and 3, leaves none of them;
 # with the user's own MUMPS_OOC_PREFIX its files stay (the control: nobody else removes them).
-foreach(mode_ranks "ours;1" "ours;2" "user;1")
+foreach(mode_ranks "ours;1" "ours;2" "ours;3" "user;1")
   list(GET mode_ranks 0 mode)
   list(GET mode_ranks 1 ranks)
   set(_run $<TARGET_FILE:boltnet_driver>)

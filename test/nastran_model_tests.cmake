@@ -237,21 +237,24 @@ add_test(NAME nastran_deck_on_rank0_medium_np2
 set_tests_properties(nastran_deck_on_rank0_medium_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox_medium)
 # A deck's joint type identified from its geometry with the shell correction measures the elements
 # around its first joint where the deck's meshes are, on rank 0 (io/scene.cpp, ShellCorrection): on
-# 2 ranks, the same element sizes, identified stiffness and joints as the lap written as a scene.
+# 1, 2 and 3 ranks, the same element sizes, identified stiffness and joints as the lap written as a
+# scene.
 set(_geo -joint_fric_from geometry -joint_fric_fastener_formula huth -joint_fric_fastener_type bolted-metal
     -joint_fric_fastener_d 5 -joint_fric_fastener_hole 5.05 -joint_fric_fastener_t1 2 -joint_fric_fastener_t2 2
     -joint_fric_fastener_E1 72000 -joint_fric_fastener_E2 72000 -joint_fric_fastener_Ef 110000 -joint_fric_fastener_mu 0.2
     -joint_fric_fastener_preload 2000 -joint_fric_fastener_shell_correction -load_max 1 -load_steps 2)
-add_test(NAME run_nastran_lap_geometry_np2
-  COMMAND ${BOLTNET_EXPECT} --match "steps converged" -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_nm}/lap.bdf -nastran_subcase 1
-          -nastran_fasteners ${_nm}/lap-fasteners.csv -output_dir ${BOLTNET_OUT}/nastran_lap_geometry_np2 ${_geo})
-add_test(NAME run_nastran_lap_geometry_scene_np2
-  COMMAND ${BOLTNET_EXPECT} --match "steps converged" -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -scene ${_nm}/lap-fric.yaml
-          -scene_bcs ${_nm}/lap-1.bcs.csv -output_dir ${BOLTNET_OUT}/nastran_lap_geometry_scene_np2 ${_geo})
-foreach(t run_nastran_lap_geometry_np2 run_nastran_lap_geometry_scene_np2)
-  set_tests_properties(${t} PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips FIXTURES_SETUP ${t})
+foreach(ranks 1 2 3)
+  add_test(NAME run_nastran_lap_geometry_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "steps converged" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe ${_drv} -nastran_deck ${_nm}/lap.bdf -nastran_subcase 1
+            -nastran_fasteners ${_nm}/lap-fasteners.csv -output_dir ${BOLTNET_OUT}/nastran_lap_geometry_np${ranks} ${_geo})
+  add_test(NAME run_nastran_lap_geometry_scene_np${ranks}
+    COMMAND ${BOLTNET_EXPECT} --match "steps converged" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe ${_drv} -scene ${_nm}/lap-fric.yaml
+            -scene_bcs ${_nm}/lap-1.bcs.csv -output_dir ${BOLTNET_OUT}/nastran_lap_geometry_scene_np${ranks} ${_geo})
+  foreach(t run_nastran_lap_geometry_np${ranks} run_nastran_lap_geometry_scene_np${ranks})
+    set_tests_properties(${t} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_strips FIXTURES_SETUP ${t})
+  endforeach()
+  add_test(NAME nastran_lap_geometry_as_scene_np${ranks}
+    COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1/subcase-1/joints.csv\" \"$2/joints.csv\" 1e-9 && ${BOLTNET_PYTHON} -c \"import json,sys; t=[json.load(open(p))['identified_joint_types']['fric'] for p in sys.argv[1:]]; c=[x['shell_correction'] for x in t]; print(c[0]['h'], t[0]['kc'], c[1]['h'], t[1]['kc']); sys.exit(0 if c[0]['h'] == c[1]['h'] == [[5, 5], [5, 5]] and abs(t[0]['kc'] / t[1]['kc'] - 1) < 1e-12 else 1)\" \"$1/subcase-1/summary.json\" \"$2/summary.json\""
+            ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_geometry_np${ranks} ${BOLTNET_OUT}/nastran_lap_geometry_scene_np${ranks})
+  set_tests_properties(nastran_lap_geometry_as_scene_np${ranks} PROPERTIES FIXTURES_REQUIRED "run_nastran_lap_geometry_np${ranks};run_nastran_lap_geometry_scene_np${ranks}")
 endforeach()
-add_test(NAME nastran_lap_geometry_as_scene_np2
-  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1/subcase-1/joints.csv\" \"$2/joints.csv\" 1e-9 && ${BOLTNET_PYTHON} -c \"import json,sys; t=[json.load(open(p))['identified_joint_types']['fric'] for p in sys.argv[1:]]; c=[x['shell_correction'] for x in t]; print(c[0]['h'], t[0]['kc'], c[1]['h'], t[1]['kc']); sys.exit(0 if c[0]['h'] == c[1]['h'] == [[5, 5], [5, 5]] and abs(t[0]['kc'] / t[1]['kc'] - 1) < 1e-12 else 1)\" \"$1/subcase-1/summary.json\" \"$2/summary.json\""
-          ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_lap_geometry_np2 ${BOLTNET_OUT}/nastran_lap_geometry_scene_np2)
-set_tests_properties(nastran_lap_geometry_as_scene_np2 PROPERTIES FIXTURES_REQUIRED "run_nastran_lap_geometry_np2;run_nastran_lap_geometry_scene_np2")

@@ -3,6 +3,7 @@
 // the holders laid out.
 #include "patch/layout_steps.hpp"
 #include "core/hash.hpp"
+#include "patch/pack.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -10,8 +11,6 @@
 #include <cstring>
 #include <new>
 #include <numeric>
-#include <stdexcept>
-#include <string>
 #include <type_traits>
 
 namespace boltnet {
@@ -95,84 +94,6 @@ PetscErrorCode ShareJoints(MPI_Comm comm, const std::vector<PetscMPIInt> &holder
 
 namespace {
 
-// A mesh as bytes (SendRank0Meshes): the counts of nodes, elements, directors and node sets, the
-// coordinates, elements and directors, then each set's name and nodes.
-class Packer {
-public:
-  std::vector<char> bytes;
-  template <class T>
-  void Put(const T *v, std::size_t n)
-  {
-    static_assert(std::is_trivially_copyable<T>::value, "packed as bytes");
-    const char *p = reinterpret_cast<const char *>(v);
-    bytes.insert(bytes.end(), p, p + n * sizeof(T));
-  }
-  void Put(std::int64_t n) { Put(&n, 1); }
-};
-
-class Unpacker {
-public:
-  explicit Unpacker(const std::vector<char> &b) : bytes_(b) {}
-  template <class T>
-  void Get(T *v, std::size_t n)
-  {
-    const std::size_t len = n * sizeof(T);
-    if (at_ + len > bytes_.size()) throw std::length_error("a mesh message ends early");
-    std::memcpy(static_cast<void *>(v), bytes_.data() + at_, len);
-    at_ += len;
-  }
-  std::int64_t Int()
-  {
-    std::int64_t n;
-    Get(&n, 1);
-    return n;
-  }
-
-private:
-  const std::vector<char> &bytes_;
-  std::size_t              at_ = 0;
-};
-
-std::vector<char> PackMesh(const ShellMesh &m)
-{
-  Packer p;
-  p.Put((std::int64_t)m.x.size());
-  p.Put((std::int64_t)m.elems.size());
-  p.Put((std::int64_t)m.directors.size());
-  p.Put((std::int64_t)m.node_sets.size());
-  p.Put(m.x.data(), m.x.size());
-  p.Put(m.elems.data(), m.elems.size());
-  p.Put(m.directors.data(), m.directors.size());
-  for (const auto &[name, nodes] : m.node_sets) {
-    p.Put((std::int64_t)name.size());
-    p.Put(name.data(), name.size());
-    p.Put((std::int64_t)nodes.size());
-    p.Put(nodes.data(), nodes.size());
-  }
-  return std::move(p.bytes);
-}
-
-ShellMesh UnpackMesh(const std::vector<char> &bytes)
-{
-  Unpacker     u(bytes);
-  ShellMesh    m;
-  std::int64_t nx = u.Int(), ne = u.Int(), nd = u.Int(), ns = u.Int();
-  m.x.resize((std::size_t)nx);
-  m.elems.resize((std::size_t)ne);
-  m.directors.resize((std::size_t)nd);
-  u.Get(m.x.data(), m.x.size());
-  u.Get(m.elems.data(), m.elems.size());
-  u.Get(m.directors.data(), m.directors.size());
-  for (std::int64_t s = 0; s < ns; ++s) {
-    std::string name((std::size_t)u.Int(), '\0');
-    u.Get(name.data(), name.size());
-    std::vector<int> &nodes = m.node_sets[name];
-    nodes.resize((std::size_t)u.Int());
-    u.Get(nodes.data(), nodes.size());
-  }
-  return m;
-}
-
 // Bytes in pieces of at most 1 GiB: one MPI message counts them in int.
 constexpr std::size_t kPiece = std::size_t(1) << 30;
 
@@ -213,7 +134,11 @@ PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &ho
     std::int64_t      len   = -1;
     int               ready = 0;
     if (rank == 0) {
-      if (attempt(id, "rank 0 could not pack", [&] { b = PackMesh(sp.mesh); })) len = (std::int64_t)b.size();
+      if (attempt(id, "rank 0 could not pack", [&] {
+            PackWriter w(b);
+            Pack(w, sp.mesh);
+          }))
+        len = (std::int64_t)b.size();
       sp.mesh = ShellMesh{}; // its memory released
       PetscCallMPI(MPI_Send(&len, 1, MPI_INT64_T, h, 0, comm));
       if (len >= 0) PetscCallMPI(MPI_Recv(&ready, 1, MPI_INT, h, 0, comm, MPI_STATUS_IGNORE));
@@ -224,7 +149,10 @@ PetscErrorCode SendRank0Meshes(MPI_Comm comm, const std::vector<PetscMPIInt> &ho
       ready = attempt(id, "this rank could not take", [&] { b.resize((std::size_t)len); }) ? 1 : 0;
       PetscCallMPI(MPI_Send(&ready, 1, MPI_INT, 0, 0, comm));
       for (std::size_t at = 0; ready && at < b.size(); at += kPiece) PetscCallMPI(MPI_Recv(b.data() + at, (PetscMPIInt)std::min(kPiece, b.size() - at), MPI_BYTE, 0, 0, comm, MPI_STATUS_IGNORE));
-      if (ready) attempt(id, "this rank could not unpack", [&] { sp.mesh = UnpackMesh(b); });
+      if (ready) attempt(id, "this rank could not unpack", [&] {
+          PackReader r(b.data(), b.size());
+          Unpack(r, sp.mesh);
+        });
     }
     parts += ready;
     bytes += ready ? len : 0;
