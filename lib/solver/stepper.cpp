@@ -75,6 +75,26 @@ static PetscErrorCode EndInterfaceSolve(KSP ksp, Vec b, Vec x, void *ctx)
   PetscFunctionReturn(0);
 }
 
+// SNESSolve in the Boltnet Solve stage. A hard error inside it (a factorisation PETSc cannot start,
+// such as an unknown -pc_factor_mat_solver_type) returns from PCSetUp before KSP's post-solve hook,
+// which leaves the stage pushed and BoltnetInterfaceSolve begun: -log_view of the failed run then
+// lists neither, and its solve time is in no stage. Both are closed here before the error goes on.
+// PETSc's own events (SNESSolve, KSPSolve, PCSetUp) stay open, as PETSc leaves them on an error.
+static PetscErrorCode SolveInStage(BoltnetAssembly a, Vec X)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogStagePush(Events().solve_stage));
+  const PetscErrorCode ierr = SNESSolve(a->snes, nullptr, X);
+  if (ierr) {
+    PetscEventPerfInfo info = {};
+    PetscCall(PetscLogEventGetPerfInfo(Events().solve_stage, Events().interface_solve, &info));
+    if (info.depth > 0) PetscCall(PetscLogEventEnd(Events().interface_solve, 0, 0, 0, 0));
+  }
+  PetscCall(PetscLogStagePop());
+  PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
 {
   SNESLineSearch ls;
@@ -362,9 +382,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
       PetscCall(AssemblyFreezeStuck(a, a->lambda_target - a->lambda));
       PetscCall(SetStepTolerance(a, Xtry));
       a->checks.singular.clear();
-      PetscCall(PetscLogStagePush(Events().solve_stage));
-      PetscCall(SNESSolve(a->snes, nullptr, Xtry));
-      PetscCall(PetscLogStagePop());
+      PetscCall(SolveInStage(a, Xtry));
       SNESConvergedReason reason;
       PetscInt            its;
       PetscCall(SNESGetConvergedReason(a->snes, &reason));
@@ -383,9 +401,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PetscMax(1, maxit - its), PETSC_DEFAULT));
         PetscCall(PetscInfo(a->snes, "step %zu: %" PetscInt_FMT " joints solved as linear springs left their linear state; solving on with the full law for them\n", a->steps.size() + 1, nreleased));
         if (a->opt.monitor_states) PetscCall(PetscPrintf(a->comm, "  step %zu: %" PetscInt_FMT " joints solved as linear springs would leave their linear state: solving on with the full law for them\n", a->steps.size() + 1, nreleased));
-        PetscCall(PetscLogStagePush(Events().solve_stage));
-        PetscCall(SNESSolve(a->snes, nullptr, Xtry));
-        PetscCall(PetscLogStagePop());
+        PetscCall(SolveInStage(a, Xtry));
         PetscCall(SNESGetConvergedReason(a->snes, &reason));
         PetscCall(SNESGetIterationNumber(a->snes, &more));
         PetscCall(RecordLinearSolves(a));
