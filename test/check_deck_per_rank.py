@@ -14,7 +14,7 @@ writes them as '[r] <sys> Function(): ...')
 
 the last three once per set-up (a deck's subcases with different SPC sets are separate set-ups).
 
-The reference is the deck itself, read here (small field, INCLUDE followed): P must be the number
+The reference is the deck itself, read here (small, large or free field, INCLUDE followed): P must be the number
 of properties of its CQUAD4/CTRIA3 elements and N the sum over them of the grids of each
 property's elements (a grid on the elements of two properties is a node of each part). The deck
 must be read once, on rank 0. In each set-up the K must add up to P and the n to N (every part laid
@@ -28,20 +28,51 @@ import subprocess
 import sys
 
 
+def shell_cards(path):
+    """(card, fields after the name) of each CQUAD4 and CTRIA3 of one file, in any of the three
+    field formats: small (8-character fields), large (a name ending in '*', 16-character fields,
+    continued on lines that start with '*') and free (fields between commas). INCLUDE lines are
+    returned as ('INCLUDE', [file name]), a quoted name joined over its lines."""
+    lines = [l.rstrip("\n") for l in open(path)]
+    i = 0
+    while i < len(lines):
+        line = lines[i]
+        i += 1
+        if line.startswith("INCLUDE"):
+            name = line.split(None, 1)[1].strip()
+            # a quoted name may go on over several lines, each piece trimmed (docs/nastran.md)
+            while name[0] in "'\"" and (len(name) == 1 or not name.endswith(name[0])) and i < len(lines):
+                name += lines[i].strip()
+                i += 1
+            yield "INCLUDE", [name.strip("'\"")]
+            continue
+        if "," in line[:16]:
+            fields = [f.strip() for f in line.split(",")]
+            if fields[0] in ("CQUAD4", "CTRIA3"):
+                yield fields[0], fields[1:]
+            continue
+        name = line[:8].strip()
+        if name.rstrip("*") not in ("CQUAD4", "CTRIA3"):
+            continue
+        if name.endswith("*"):
+            fields = [line[8 + 16 * k:24 + 16 * k].strip() for k in range(4)]
+            while i < len(lines) and lines[i].startswith("*"):
+                fields += [lines[i][8 + 16 * k:24 + 16 * k].strip() for k in range(4)]
+                i += 1
+            yield name[:-1], fields
+        else:
+            yield name, [line[8 * k:8 * k + 8].strip() for k in range(1, 9)]
+
+
 def deck_parts(path):
-    """{pid: set of grids} of the deck's CQUAD4 and CTRIA3 (small field), INCLUDEs followed."""
+    """{pid: set of grids} of the deck's CQUAD4 and CTRIA3, INCLUDEs followed."""
     parts = {}
     here = os.path.dirname(path)
-    for line in open(path):
-        if line.startswith("INCLUDE"):
-            name = line.split(None, 1)[1].strip().strip("'\"")
-            for pid, grids in deck_parts(os.path.join(here, name)).items():
+    for card, fields in shell_cards(path):
+        if card == "INCLUDE":
+            for pid, grids in deck_parts(os.path.join(here, fields[0])).items():
                 parts.setdefault(pid, set()).update(grids)
             continue
-        card = line[:8].strip()
-        if card not in ("CQUAD4", "CTRIA3"):
-            continue
-        fields = [line[8 * i:8 * i + 8].strip() for i in range(1, 9)]
         nodes = 4 if card == "CQUAD4" else 3
         parts.setdefault(int(fields[1]), set()).update(int(g) for g in fields[2:2 + nodes])
     return parts

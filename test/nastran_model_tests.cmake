@@ -216,6 +216,15 @@ foreach(ranks 1 2 3)
   set_tests_properties(nastran_deck_on_rank0_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox
     FIXTURES_SETUP nastran_deck_on_rank0_np${ranks})
 endforeach()
+# The same box written in large and in free field (its grids' and elements' cards continued over two
+# lines, the INCLUDE's quoted name over two lines): the same checks on 2 ranks.
+foreach(fmt large free)
+  add_test(NAME nastran_deck_on_rank0_${fmt}_np2
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${BOLTNET_OUT}/nastran-wingbox/wingbox-${fmt}.bdf 2
+            -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${BOLTNET_OUT}/nastran-wingbox/wingbox-${fmt}.bdf
+            -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_${fmt}_np2 -load_max 1 -load_steps 1 -info)
+  set_tests_properties(nastran_deck_on_rank0_${fmt}_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox)
+endforeach()
 foreach(sub 1 2)
   add_test(NAME nastran_wingbox_${sub}_ranks_1_vs_3
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/nastran_deck_on_rank0_np1/subcase-${sub}/joints.csv ${BOLTNET_OUT}/nastran_deck_on_rank0_np3/subcase-${sub}/joints.csv 1e-9)
