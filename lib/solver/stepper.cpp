@@ -149,6 +149,9 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCheck(a->checks.equilibrium_rtol > 0 && a->checks.equilibrium_rtol < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_equilibrium_rtol %g must lie in (0, 1)", (double)a->checks.equilibrium_rtol);
   PetscCheck(a->checks.null_pivot_threshold > 0 && a->checks.null_pivot_threshold < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_null_pivot_threshold %g must lie in (0, 1)", (double)a->checks.null_pivot_threshold);
   PetscCall(AssemblySetUpNullPivots(a));
+  // SNESSetFromOptions may have changed the SNES type (-snes_type ksponly, say), which destroys the
+  // line search fetched above and gives the SNES a new one: fetch it again.
+  PetscCall(SNESGetLineSearch(a->snes, &ls));
   PetscCall(SNESLineSearchBoltnetSetStateChangeFunction(ls, AssemblyCountStateChanges, a));
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-snes_atol", &a->checks.user_atol));
   PetscCall(SNESGetForceIteration(a->snes, &a->checks.user_force)); // -snes_force_iteration; a predicted step forces its own
