@@ -40,11 +40,16 @@ def shell_cards(path):
         i += 1
         if line.startswith("INCLUDE"):
             name = line.split(None, 1)[1].strip()
-            # a quoted name may go on over several lines, each piece trimmed (docs/nastran.md)
-            while name[0] in "'\"" and (len(name) == 1 or not name.endswith(name[0])) and i < len(lines):
-                name += lines[i].strip()
-                i += 1
-            yield "INCLUDE", [name.strip("'\"")]
+            if name[0] in "'\"":
+                # a quoted name may go on over several lines, each piece trimmed (docs/nastran.md);
+                # what follows its closing quote (a $ comment) is not part of it
+                while name.find(name[0], 1) < 0 and i < len(lines):
+                    name += lines[i].strip()
+                    i += 1
+                name = name[1:name.find(name[0], 1)]
+            else:
+                name = name.split("$", 1)[0].strip()
+            yield "INCLUDE", [name]
             continue
         if "," in line[:16]:
             fields = [f.strip() for f in line.split(",")]

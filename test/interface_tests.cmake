@@ -182,14 +182,18 @@ foreach(ranks 1 2 3)
 endforeach()
 
 # A solve that stops on a hard error inside PCSetUp (a solver type PETSc does not have) still lists
-# the interface solve's event in -log_view: the stepper ends it and pops the solve stage before the
-# error goes on (solver/stepper.cpp, SolveInStage). Without that, the event was never logged.
+# the interface solve's event in -log_view: the stepper ends it before the error goes on
+# (solver/stepper.cpp, SolveInStage). Without that, the event was never logged.
 foreach(ranks 1 2)
   boltnet_expect(log_view_failed_solve ${ranks} --fail --match "Could not locate solver type nonexistent"
                  --match "BoltnetInterfaceSolve +1 "
                  -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3a.yaml
                  -output_dir ${BOLTNET_OUT}/log_view_failed_solve_np${ranks} -output_fields false -pc_factor_mat_solver_type nonexistent -log_view)
 endforeach()
+# Without -log_view the same run reports PETSc's error alone.
+boltnet_expect(failed_solve_no_log 1 --fail --match "Could not locate solver type nonexistent" --reject "log_view"
+               -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3a.yaml
+               -output_dir ${BOLTNET_OUT}/failed_solve_no_log -output_fields false -pc_factor_mat_solver_type nonexistent)
 
 # The interface solve's own event (BoltnetInterfaceSolve, KSP's pre- and post-solve hooks) holds
 # every Newton iteration's linear solve with its factorisation: as many calls as PETSc's KSPSolve,

@@ -216,8 +216,8 @@ foreach(ranks 1 2 3)
   set_tests_properties(nastran_deck_on_rank0_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox
     FIXTURES_SETUP nastran_deck_on_rank0_np${ranks})
 endforeach()
-# The same box written in large and in free field (its grids' and elements' cards continued over two
-# lines, the INCLUDE's quoted name over two lines): the same checks on 2 ranks.
+# The same box written in large field (its grids' and elements' cards continued over two lines) and
+# in free field (the INCLUDE's quoted name over two lines): the same checks on 2 ranks.
 foreach(fmt large free)
   add_test(NAME nastran_deck_on_rank0_${fmt}_np2
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${BOLTNET_OUT}/nastran-wingbox/wingbox-${fmt}.bdf 2

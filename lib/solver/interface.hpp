@@ -31,6 +31,7 @@ struct InterfaceSolve {
   PetscInt  keep_it    = -1; // iteration of the last Jacobian call in this solve
   PetscReal keep_fnorm = 0;  // the residual norm there
   PetscInt  kept       = 0;  // Jacobians kept by this rule, for summary.json
+  PetscBool in_event   = PETSC_FALSE; // BoltnetInterfaceSolve begun and not yet ended (solver/stepper.cpp)
   // Factors on disk (MUMPS ICNTL(22) = 1) when MUMPS's analysis estimates more memory than a node
   // has (memory_mb, 0: what the operating system says is available), or when a factorisation runs
   // out of memory: -interface_out_of_core; factors_on_disk once that happened, or once a

@@ -57,38 +57,44 @@ PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
 // post-solve hook once the Krylov method (or the triangular solves alone) has returned. KSP holds
 // one pair of hooks, and SNESGetKSP has already given it SNES's own: KSPPreSolve_SNESEW and
 // KSPPostSolve_SNESEW, where -snes_ksp_ew (Eisenstat-Walker) sets each solve's tolerance and
-// measures it. These hooks take their place, so they call them (ctx is the SNES); without it
-// -snes_ksp_ew would silently do nothing.
+// measures it. These hooks take their place, so they call them (with the assembly's SNES); without
+// it -snes_ksp_ew would silently do nothing. The assembly records that the event is open, for
+// SolveInStage below.
 static PetscErrorCode BeginInterfaceSolve(KSP ksp, Vec b, Vec x, void *ctx)
 {
+  BoltnetAssembly a = static_cast<BoltnetAssembly>(ctx);
   PetscFunctionBeginUser;
   PetscCall(PetscLogEventBegin(Events().interface_solve, 0, 0, 0, 0));
-  PetscCall(KSPPreSolve_SNESEW(ksp, b, x, static_cast<SNES>(ctx)));
+  a->isolve.in_event = PETSC_TRUE;
+  PetscCall(KSPPreSolve_SNESEW(ksp, b, x, a->snes));
   PetscFunctionReturn(0);
 }
 
 static PetscErrorCode EndInterfaceSolve(KSP ksp, Vec b, Vec x, void *ctx)
 {
+  BoltnetAssembly a = static_cast<BoltnetAssembly>(ctx);
   PetscFunctionBeginUser;
-  PetscCall(KSPPostSolve_SNESEW(ksp, b, x, static_cast<SNES>(ctx)));
+  PetscCall(KSPPostSolve_SNESEW(ksp, b, x, a->snes));
+  a->isolve.in_event = PETSC_FALSE;
   PetscCall(PetscLogEventEnd(Events().interface_solve, 0, 0, 0, 0));
   PetscFunctionReturn(0);
 }
 
 // SNESSolve in the Boltnet Solve stage. A hard error inside it (a factorisation PETSc cannot start,
-// such as an unknown -pc_factor_mat_solver_type) returns from PCSetUp before KSP's post-solve hook,
-// which leaves the stage pushed and BoltnetInterfaceSolve begun: -log_view of the failed run then
-// lists neither, and its solve time is in no stage. Both are closed here before the error goes on.
-// PETSc's own events (SNESSolve, KSPSolve, PCSetUp) stay open, as PETSc leaves them on an error.
+// such as an unknown -pc_factor_mat_solver_type) returns from PCSetUp before KSP's post-solve hook
+// and leaves BoltnetInterfaceSolve begun; PetscLogView lists no event still begun, so -log_view of
+// the failed run would not show the interface solve at all. The event is ended here (whether or not
+// a log is kept: PetscLogEventEnd does nothing without one) and the stage popped before the error
+// goes on. PETSc's own events (SNESSolve, KSPSolve, PCSetUp) stay begun, as PETSc leaves them.
 static PetscErrorCode SolveInStage(BoltnetAssembly a, Vec X)
 {
   PetscFunctionBeginUser;
   PetscCall(PetscLogStagePush(Events().solve_stage));
+  a->isolve.in_event         = PETSC_FALSE;
   const PetscErrorCode ierr = SNESSolve(a->snes, nullptr, X);
-  if (ierr) {
-    PetscEventPerfInfo info = {};
-    PetscCall(PetscLogEventGetPerfInfo(Events().solve_stage, Events().interface_solve, &info));
-    if (info.depth > 0) PetscCall(PetscLogEventEnd(Events().interface_solve, 0, 0, 0, 0));
+  if (ierr && a->isolve.in_event) {
+    a->isolve.in_event = PETSC_FALSE;
+    PetscCall(PetscLogEventEnd(Events().interface_solve, 0, 0, 0, 0));
   }
   PetscCall(PetscLogStagePop());
   PetscCall(ierr);
@@ -135,8 +141,8 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   if (a->isolve.lagged) PetscCall(AssemblyUseLaggedKSP(a));
   else PetscCall(KSPSetType(ksp, KSPPREONLY));
-  PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, a->snes));
-  PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, a->snes));
+  PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, a));
+  PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, a));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCLU));
   PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
