@@ -42,6 +42,8 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   PetscCall(MatDestroy(&(*a)->checks.Jlast));
   PetscCall(AbsMultDestroy(&(*a)->checks.roundoff));
   PetscCall(MatDestroy(&(*a)->Jbase));
+  PetscCall(MatDestroy(&(*a)->isolve.P));
+  PetscCall(MatDestroy(&(*a)->isolve.Pbase));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(VecDestroy(&(*a)->Xprev));
   PetscCall(DMDestroy(&(*a)->net.dm));
@@ -93,6 +95,7 @@ PetscErrorCode SetFromOptions(BoltnetAssembly a)
   PetscCall(PetscOptionsString("-patch_condense", "Condense shell patches onto their ports (joint nodes and seam nodes) once per analysis, so that Newton iterates on the interface only: auto (each patch whose port dof are at most -patch_condense_ratio times the square root of its dof), true (every patch) or false (none: every node in the global system); docs/solver.md", "BoltnetAssemblySetFromOptions", condense, condense, sizeof condense, &condense_set));
   PetscCall(PetscOptionsReal("-patch_condense_ratio", "With -patch_condense auto: condense a shell patch when its port dof are at most this many times the square root of its dof, where its dense port block costs less than its sparse factorisation (docs/solver.md, \"Which patches are condensed\")", "BoltnetAssemblySetFromOptions", o.condense_ratio, &o.condense_ratio, nullptr));
   PetscCall(PetscOptionsBool("-interface_near_null_space", "Give the Jacobian the six rigid-body modes of its nodes (three translations, three rotations) as near-null space (MatSetNearNullSpace), which GAMG and BoomerAMG use to build their coarse spaces; LU ignores it (docs/solver.md)", "BoltnetAssemblySetFromOptions", o.near_null_space, &o.near_null_space, nullptr));
+  PetscCall(PetscOptionsBool("-interface_matis", "Also assemble the Jacobian unassembled, as a MATIS with one subdomain per rank (its patches, seams and joints), and precondition GMRES with PETSc's BDDC on it (PCBDDC; -ksp_ and -pc_bddc_ options apply) instead of factoring J: docs/solver.md, \"BDDC\"", "BoltnetAssemblySetFromOptions", o.matis, &o.matis, nullptr));
   PetscCall(PetscOptionsInt("-patch_max_nodes", "Largest shell patch in nodes: a larger part is cut by METIS into patches joined by seam edges (0: never cut; -1: automatic: no cut on one rank; on several, about four patches per rank (none below 64 nodes), or with -patch_condense false eight (none below 32); docs/solver.md)", "BoltnetAssemblySetFromOptions", o.patch_max_nodes, &o.patch_max_nodes, nullptr));
   PetscCall(PetscOptionsBool("-patch_balance", "Distribute the patches over the ranks by dof with METIS (false: PETSc's partitioner, by edge count)", "BoltnetAssemblySetFromOptions", o.balance, &o.balance, nullptr));
   PetscCall(PetscOptionsReal("-coupling_penalty", "Penalty of the rigid footprint links, as a multiple of the shell's membrane stiffness A11 (N/mm)", "BoltnetAssemblySetFromOptions", o.coupling_penalty, &o.coupling_penalty, nullptr));

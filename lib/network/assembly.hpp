@@ -51,6 +51,8 @@ struct AssemblyOptions {
   // The six rigid-body modes of the nodes as the Jacobian's near-null space (MatSetNearNullSpace),
   // for algebraic multigrid (docs/solver.md, "Iterative solvers"); LU ignores it.
   PetscBool    near_null_space = PETSC_TRUE;
+  // The Jacobian also as a MATIS, one subdomain per rank, for PCBDDC (docs/solver.md, "BDDC").
+  PetscBool    matis = PETSC_FALSE;
   // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,
   // -1: automatic), and whether boltnet partitions the network by dof (METIS) or PETSc does.
   PetscInt     patch_max_nodes = -1;
@@ -262,6 +264,9 @@ std::string    DescribeEquilibrium(const Equilibrium &eq);
 // factors on disk (ICNTL(22)) once they did not fit in memory; a no-op for other solvers. Call
 // after the solver is set up and after every PCReset.
 PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
+// A fresh preconditioner for the next solve, after a failed one or before another load case:
+// PCReset, or for BDDC a new one (solver/stepper.cpp). Call AssemblySetUpNullPivots after it.
+PetscErrorCode AssemblyResetPC(BoltnetAssembly a);
 // The lagged interface solve's Krylov method (GMRES, right preconditioned) on the SNES's KSP.
 PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a);
 // Back to the direct solve (a KSP that applies the factorisation, refactored whenever J changes),

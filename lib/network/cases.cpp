@@ -38,11 +38,7 @@ PetscErrorCode AssemblyReset(BoltnetAssembly a)
   js.jac_assembled = js.jac_reused = js.frozen_joint_steps = js.joint_steps = js.released = 0;
   // A fresh factorisation for the first Jacobian, as in a run of its own (a case that failed may
   // leave MUMPS in an error state).
-  KSP ksp;
-  PC  pc;
-  PetscCall(SNESGetKSP(a->snes, &ksp));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCReset(pc));
+  PetscCall(AssemblyResetPC(a));
   PetscCall(AssemblySetUpNullPivots(a));
   PetscFunctionReturn(0);
 }

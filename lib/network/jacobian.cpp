@@ -6,9 +6,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 
 namespace boltnet {
 namespace {
+
+// Where a block of the Jacobian goes, in global dof: the assembled AIJ matrix (MatSetValues), or
+// one rank's subdomain matrix of the MATIS (LocalInserter below).
+using Inserter = std::function<PetscErrorCode(PetscInt, const PetscInt *, PetscInt, const PetscInt *, const PetscScalar *, InsertMode)>;
+
+Inserter MatInserter(Mat M)
+{
+  return [M](PetscInt m, const PetscInt *r, PetscInt n, const PetscInt *c, const PetscScalar *v, InsertMode mode) { return MatSetValues(M, m, r, n, c, v, mode); };
+}
 
 // Seam element blocks: the rows of the nodes on each side (global dof), -1 elsewhere.
 void SideRows(const Seam::Element &el, PetscInt ga, PetscInt gb, PetscInt rows[2][24], PetscInt idx[2][24], int n[2])
@@ -41,7 +51,7 @@ PetscErrorCode SeamOf(BoltnetAssembly a, PetscInt e, const Seam **seam, PetscInt
 
 // Add the blocks between the two sides of every element of an owned seam: (side 0 rows, side 1
 // columns) and (side 1 rows, side 0 columns). The blocks within one side belong to the patches.
-PetscErrorCode AddSeamBlocks(BoltnetAssembly a, Mat M, bool values)
+PetscErrorCode AddSeamBlocks(BoltnetAssembly a, const Inserter &M, bool values)
 {
   PetscFunctionBeginUser;
   std::vector<PetscScalar> blk(24 * 24, 0.0);
@@ -58,7 +68,7 @@ PetscErrorCode AddSeamBlocks(BoltnetAssembly a, Mat M, bool values)
         const int t = 1 - s;
         for (int i = 0; i < n[s]; ++i)
           for (int j = 0; j < n[t]; ++j) blk[(size_t)i * n[t] + j] = values ? (*Ks)[k][24 * idx[s][i] + idx[t][j]] : 0.0;
-        PetscCall(MatSetValues(M, n[s], rows[s], n[t], rows[t], blk.data(), values ? ADD_VALUES : INSERT_VALUES));
+        PetscCall(M(n[s], rows[s], n[t], rows[t], blk.data(), values ? ADD_VALUES : INSERT_VALUES));
       }
     }
   }
@@ -66,7 +76,7 @@ PetscErrorCode AddSeamBlocks(BoltnetAssembly a, Mat M, bool values)
 }
 
 // Add the owned patches' operators (values false: zeros, for the pattern).
-PetscErrorCode AddPatchBlocks(BoltnetAssembly a, Mat M, bool values)
+PetscErrorCode AddPatchBlocks(BoltnetAssembly a, const Inserter &M, bool values)
 {
   PetscFunctionBeginUser;
   std::vector<PetscInt>    cols;
@@ -78,7 +88,7 @@ PetscErrorCode AddPatchBlocks(BoltnetAssembly a, Mat M, bool values)
       cols.resize(nb);
       for (PetscInt i = 0; i < nb; ++i) cols[i] = op.goff + i;
       if (!values) z.assign((size_t)nb * nb, 0.0);
-      PetscCall(MatSetValues(M, nb, cols.data(), nb, cols.data(), values ? op.cond.S.data() : z.data(), values ? ADD_VALUES : INSERT_VALUES));
+      PetscCall(M(nb, cols.data(), nb, cols.data(), values ? op.cond.S.data() : z.data(), values ? ADD_VALUES : INSERT_VALUES));
       continue;
     }
     for (PetscInt r = 0; r < op.op.n; ++r) {
@@ -86,7 +96,7 @@ PetscErrorCode AddPatchBlocks(BoltnetAssembly a, Mat M, bool values)
       cols.resize(e - b);
       for (PetscInt k = b; k < e; ++k) cols[k - b] = op.goff + op.op.cols[k];
       if (!values) z.assign(e - b, 0.0);
-      PetscCall(MatSetValues(M, 1, &row, e - b, cols.data(), values ? op.op.vals.data() + b : z.data(), values ? ADD_VALUES : INSERT_VALUES));
+      PetscCall(M(1, &row, e - b, cols.data(), values ? op.op.vals.data() + b : z.data(), values ? ADD_VALUES : INSERT_VALUES));
     }
   }
   PetscFunctionReturn(0);
@@ -154,8 +164,100 @@ PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
   }
   PetscCall(MatNullSpaceCreate(a->comm, PETSC_FALSE, 6, modes, &nsp));
   PetscCall(MatSetNearNullSpace(a->J, nsp));
+  if (a->isolve.P) PetscCall(MatSetNearNullSpace(a->isolve.P, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
   for (int m = 0; m < 6; ++m) PetscCall(VecDestroy(&modes[m]));
+  PetscFunctionReturn(0);
+}
+
+// This rank's subdomain of the MATIS (-interface_matis): the global nodes (6 dof each) that its
+// joints, seams, patches and owned rows touch, sorted; global dof g is its local dof
+// 6 * (position of g / 6) + g % 6. Blocks go into its local matrix in global dof.
+Inserter LocalInserter(const std::vector<PetscInt> &nodes, Mat loc)
+{
+  return [&nodes, loc](PetscInt m, const PetscInt *r, PetscInt n, const PetscInt *c, const PetscScalar *v, InsertMode mode) -> PetscErrorCode {
+    PetscFunctionBeginUser;
+    auto local = [&nodes](PetscInt g) -> PetscInt {
+      const auto it = std::lower_bound(nodes.begin(), nodes.end(), g / 6);
+      return it != nodes.end() && *it == g / 6 ? 6 * (PetscInt)(it - nodes.begin()) + g % 6 : -1;
+    };
+    std::vector<PetscInt> lr(m), lc(n);
+    for (PetscInt i = 0; i < m; ++i) PetscCheck((lr[i] = local(r[i])) >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "dof %" PetscInt_FMT " is not in this rank's subdomain", r[i]);
+    for (PetscInt j = 0; j < n; ++j) PetscCheck((lc[j] = local(c[j])) >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "dof %" PetscInt_FMT " is not in this rank's subdomain", c[j]);
+    PetscCall(MatSetValues(loc, m, lr.data(), n, lc.data(), v, mode));
+    PetscFunctionReturn(0);
+  };
+}
+
+// The rank's blocks of the linear part, and zeros where its joints and the diagonal go: the
+// diagonal of its owned rows and of every node of its subdomain (nodes, once they are known),
+// since MatZeroRows puts a Dirichlet row's diagonal into every subdomain that holds its dof.
+PetscErrorCode AddSubdomainBlocks(BoltnetAssembly a, const Inserter &ins, bool values, InsertMode zeros_mode, const std::vector<PetscInt> &nodes)
+{
+  PetscScalar zeros[144] = {0};
+  PetscInt    rstart, rend;
+  PetscFunctionBeginUser;
+  PetscCall(VecGetOwnershipRange(a->X, &rstart, &rend));
+  for (const auto &rows : a->joints.rows) PetscCall(ins(12, rows.data(), 12, rows.data(), zeros, zeros_mode));
+  for (PetscInt i = rstart; i < rend; ++i) PetscCall(ins(1, &i, 1, &i, zeros, zeros_mode));
+  for (PetscInt node : nodes)
+    for (PetscInt i = 6 * node; i < 6 * node + 6; ++i) PetscCall(ins(1, &i, 1, &i, zeros, zeros_mode));
+  PetscCall(AddSeamBlocks(a, ins, values));
+  PetscCall(AddPatchBlocks(a, ins, values));
+  PetscFunctionReturn(0);
+}
+
+// The linear part of J as a MATIS (MatCreateIS), for PCBDDC (docs/solver.md, "BDDC"): one
+// subdomain per rank, whose local matrix is the sum of the rank's own contributions, its patches
+// (their condensed S or their whole operator), its seams' blocks and, at each Jacobian, its joints'
+// blocks. Summed over the ranks that is J, entry for entry; unlike a MATIS converted from the AIJ J
+// (MatConvert, which gives each rank its rows, not a subdomain's Neumann matrix), it is the
+// unassembled operator BDDC's subdomain solves need.
+PetscErrorCode CreateSubdomainMatrix(BoltnetAssembly a)
+{
+  std::vector<PetscInt> &nodes = a->isolve.subdomain_nodes;
+  PetscInt               n;
+  Mat                    pre, loc;
+  ISLocalToGlobalMapping l2g;
+  PetscFunctionBeginUser;
+  nodes.clear();
+  const Inserter collect = [&nodes](PetscInt m, const PetscInt *r, PetscInt k, const PetscInt *c, const PetscScalar *, InsertMode) -> PetscErrorCode {
+    for (PetscInt i = 0; i < m; ++i) nodes.push_back(r[i] / 6);
+    for (PetscInt j = 0; j < k; ++j) nodes.push_back(c[j] / 6);
+    return PetscErrorCode(0);
+  };
+  PetscCall(AddSubdomainBlocks(a, collect, false, INSERT_VALUES, {}));
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const PetscInt nl = 6 * (PetscInt)nodes.size();
+  PetscCall(MatCreate(PETSC_COMM_SELF, &pre));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetSizes(pre, nl, nl, nl, nl));
+  PetscCall(MatSetBlockSize(pre, 6));
+  PetscCall(MatSetUp(pre));
+  PetscCall(AddSubdomainBlocks(a, LocalInserter(nodes, pre), false, INSERT_VALUES, nodes));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatCreate(PETSC_COMM_SELF, &loc));
+  PetscCall(MatSetType(loc, MATSEQAIJ));
+  PetscCall(MatSetSizes(loc, nl, nl, nl, nl));
+  PetscCall(MatSetBlockSize(loc, 6));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, loc));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatSetOption(loc, MAT_KEEP_NONZERO_PATTERN, PETSC_TRUE));
+  PetscCall(MatSetOption(loc, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(AddSubdomainBlocks(a, LocalInserter(nodes, loc), true, ADD_VALUES, nodes));
+  PetscCall(MatAssemblyBegin(loc, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(loc, MAT_FINAL_ASSEMBLY));
+  PetscCall(VecGetLocalSize(a->X, &n));
+  PetscCall(ISLocalToGlobalMappingCreate(a->comm, 6, (PetscInt)nodes.size(), nodes.data(), PETSC_COPY_VALUES, &l2g));
+  PetscCall(MatCreateIS(a->comm, 6, n, n, PETSC_DETERMINE, PETSC_DETERMINE, l2g, l2g, &a->isolve.P));
+  PetscCall(ISLocalToGlobalMappingDestroy(&l2g));
+  PetscCall(MatISSetLocalMat(a->isolve.P, loc));
+  PetscCall(MatDestroy(&loc));
+  PetscCall(MatAssemblyBegin(a->isolve.P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(a->isolve.P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatDuplicate(a->isolve.P, MAT_COPY_VALUES, &a->isolve.Pbase));
   PetscFunctionReturn(0);
 }
 
@@ -182,11 +284,11 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   PetscCall(MatSetUp(pre));
   PetscScalar zeros[144] = {0};
   for (const auto &rows : a->joints.rows) PetscCall(MatSetValues(pre, 12, rows.data(), 12, rows.data(), zeros, INSERT_VALUES));
-  PetscCall(AddSeamBlocks(a, pre, false));
+  PetscCall(AddSeamBlocks(a, MatInserter(pre), false));
   PetscInt rstart;
   PetscCall(VecGetOwnershipRange(a->X, &rstart, nullptr));
   for (PetscInt i = rstart; i < rstart + n; ++i) PetscCall(MatSetValue(pre, i, i, 0.0, INSERT_VALUES));
-  PetscCall(AddPatchBlocks(a, pre, false));
+  PetscCall(AddPatchBlocks(a, MatInserter(pre), false));
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatCreate(a->comm, &a->J));
@@ -201,11 +303,12 @@ PetscErrorCode AssemblyCreateJacobian(BoltnetAssembly a)
   // go (so that the assembly keeps their places). Each Jacobian starts as a copy of it.
   for (const auto &rows : a->joints.rows) PetscCall(MatSetValues(a->J, 12, rows.data(), 12, rows.data(), zeros, ADD_VALUES));
   for (PetscInt i = rstart; i < rstart + n; ++i) PetscCall(MatSetValue(a->J, i, i, 0.0, ADD_VALUES));
-  PetscCall(AddSeamBlocks(a, a->J, true));
-  PetscCall(AddPatchBlocks(a, a->J, true));
+  PetscCall(AddSeamBlocks(a, MatInserter(a->J), true));
+  PetscCall(AddPatchBlocks(a, MatInserter(a->J), true));
   PetscCall(MatAssemblyBegin(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(a->J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatDuplicate(a->J, MAT_COPY_VALUES, &a->Jbase));
+  if (a->opt.matis) PetscCall(CreateSubdomainMatrix(a));
   // Jbase now holds the patch operators, the condensed S and the seam blocks: the residual
   // multiplies by it, so their own copies go (on a 5M-dof model a whole copy of the global matrix).
   for (OwnedPatch &op : a->patches.owned) {
@@ -269,7 +372,8 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // (bit for bit) from the one in J, J is already this Jacobian. Leaving it untouched keeps its
   // object state, and PCSetUp then keeps the factorisation too.
   if (a->isolve.lagged && !a->isolve.lagged_ksp) PetscCall(AssemblyUseLaggedKSP(a)); // chosen by MUMPS's first analysis
-  if (a->opt.stuck_linear && J == a->J && P == J && js.jac_valid) {
+  const bool own_pc = P == J || (a->isolve.P && P == a->isolve.P); // the preconditioner is built from J (or its MATIS)
+  if (a->opt.stuck_linear && J == a->J && own_pc && js.jac_valid) {
     // Counted over all joints, for -info: how far the Jacobian is from the last one (a low-rank
     // update of a kept factorisation pays only when few joints change: docs/performance.md).
     PetscInt changed[2] = {0, (PetscInt)resp.size()}, total[2];
@@ -292,7 +396,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   // last iteration reduced the residual by keep_ratio and no joint changed state since J was
   // assembled. Only the bearing joints' contact directions (and sliding joints' tangents) have moved:
   // the step with the old factors then contracts about as fast as the factorisation saved is dear.
-  if (fast && !a->isolve.lagged && J == a->J && P == J && js.jac_valid && js.jac_state.size() == resp.size()) {
+  if (fast && !a->isolve.lagged && J == a->J && own_pc && js.jac_valid && js.jac_state.size() == resp.size()) {
     PetscInt changed = 0, total;
     for (size_t k = 0; k < resp.size(); ++k) changed += js.jac_state[k] != StateCode(resp[k]);
     PetscCallMPI(MPIU_Allreduce(&changed, &total, 1, MPIU_INT, MPI_SUM, a->comm));
@@ -305,8 +409,19 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   }
   // J = the linear part (Jbase) + the joints. In the lagged interface solve the PC may keep the
   // factorisation of an earlier J: the Krylov solve on this J is preconditioned by it.
-  Mat M = P;
+  // With -interface_matis, P is J's MATIS: J is assembled as always, and P from its linear part
+  // (Pbase) and the same joint blocks, in this rank's subdomain.
+  const bool matis = a->isolve.P && P == a->isolve.P;
+  Mat        M     = matis ? J : P, Ploc = nullptr;
   PetscCall(MatCopy(a->Jbase, M, SAME_NONZERO_PATTERN));
+  if (matis) {
+    Mat Bloc;
+    PetscCall(MatISGetLocalMat(a->isolve.Pbase, &Bloc));
+    PetscCall(MatISGetLocalMat(P, &Ploc));
+    PetscCall(MatCopy(Bloc, Ploc, SAME_NONZERO_PATTERN));
+    PetscCall(MatISRestoreLocalMat(a->isolve.Pbase, &Bloc));
+  }
+  const Inserter subdomain = matis ? LocalInserter(a->isolve.subdomain_nodes, Ploc) : Inserter();
   for (size_t k = 0; k < js.size(); ++k) {
     PetscScalar vals[144];
     // In the joint plane (t1, t2), entries at round-off of the block's largest are zeros that the
@@ -333,10 +448,17 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
         vals[12 * i + j] = sign * v;
       }
     PetscCall(MatSetValues(M, 12, js.rows[k].data(), 12, js.rows[k].data(), vals, ADD_VALUES));
+    if (matis) PetscCall(subdomain(12, js.rows[k].data(), 12, js.rows[k].data(), vals, ADD_VALUES));
   }
   PetscCall(MatAssemblyBegin(M, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(M, MAT_FINAL_ASSEMBLY));
   PetscCall(MatZeroRows(M, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
+  if (matis) {
+    PetscCall(MatISRestoreLocalMat(P, &Ploc));
+    PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatZeroRows(P, (PetscInt)a->bc.dirichlet_rows.size(), a->bc.dirichlet_rows.data(), 1.0, nullptr, nullptr));
+  }
   PetscCall(MatNorm(M, NORM_INFINITY, &a->checks.jnorm)); // the scale of round-off in K u (solver/stepper.cpp)
   if (a->checks.Jlast != M) { // the round-off test's |J| |x| is computed from M itself (solver/roundoff.hpp)
     PetscCall(PetscObjectReference((PetscObject)M));
@@ -352,7 +474,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
     js.jac_state[k]   = StateCode(resp[k]);
   }
   if (a->isolve.lagged) PetscCall(AssemblyLaggedFactorisation(a));
-  else if (J != P) {
+  else if (J != P && !matis) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }

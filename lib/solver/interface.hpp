@@ -8,6 +8,7 @@
 
 #include <petscmat.h>
 #include <string>
+#include <vector>
 
 namespace boltnet {
 
@@ -42,6 +43,10 @@ struct InterfaceSolve {
   PetscReal memory_mb       = 0;
   PetscBool factors_on_disk = PETSC_FALSE;
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
+  // -interface_matis: J's MATIS, the preconditioning matrix of PCBDDC, and its linear part; the
+  // global nodes of this rank's subdomain, sorted (network/jacobian.cpp, CreateSubdomainMatrix).
+  Mat                   P = nullptr, Pbase = nullptr;
+  std::vector<PetscInt> subdomain_nodes;
 };
 
 // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md, "When is a step converged").

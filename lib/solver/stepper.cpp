@@ -52,6 +52,46 @@ PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
+// BDDC's fields (-interface_matis): the six dof of a node as six fields, in the subdomain's local
+// numbering, which is what BDDC takes from the local matrix's block size when it has nothing else.
+// Given, because otherwise it asks the SNES's DM for a field decomposition, which DMNetwork does not
+// have. No-op for any other PC.
+static PetscErrorCode SetBDDCFields(BoltnetAssembly a, PC pc)
+{
+  IS fields[6];
+  PetscFunctionBeginUser;
+  if (!a->isolve.P) PetscFunctionReturn(0);
+  const PetscInt nodes = (PetscInt)a->isolve.subdomain_nodes.size();
+  for (PetscInt f = 0; f < 6; ++f) PetscCall(ISCreateStride(PETSC_COMM_SELF, nodes, f, 6, &fields[f]));
+  PetscCall(PCBDDCSetDofsSplittingLocal(pc, 6, fields));
+  for (PetscInt f = 0; f < 6; ++f) PetscCall(ISDestroy(&fields[f]));
+  PetscFunctionReturn(0);
+}
+
+// A fresh preconditioner for the next solve. PCReset for a factorisation: a failed one leaves
+// MUMPS in an error state that the next solve would raise. BDDC is made anew instead (its type
+// set again, its options read again, its fields given again): in PETSc 3.18.5 a PCSetUp after
+// PCReset on PCBDDC crashes in PCBDDCGraphInit.
+PetscErrorCode AssemblyResetPC(BoltnetAssembly a)
+{
+  KSP       ksp;
+  PC        pc;
+  PetscBool bddc;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCBDDC, &bddc));
+  if (!bddc) {
+    PetscCall(PCReset(pc));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(PCSetType(pc, PCNONE));
+  PetscCall(PCSetType(pc, PCBDDC));
+  PetscCall(PCSetFromOptions(pc));
+  PetscCall(SetBDDCFields(a, pc));
+  PetscFunctionReturn(0);
+}
+
 // The interface solve of a Newton iteration as one event (BoltnetInterfaceSolve): KSPSolve calls
 // the pre-solve hook before KSPSetUp, so the factorisation (PCSetUp) is inside it, and the
 // post-solve hook once the Krylov method (or the triangular solves alone) has returned. KSP holds
@@ -123,7 +163,10 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->isolve.storage_given));
   if (a->isolve.storage_given) a->isolve.out_of_core = PETSC_FALSE;
   PetscCheck(a->isolve.memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->isolve.memory_mb);
-  a->isolve.solve_auto = isolve == 0 ? PETSC_TRUE : PETSC_FALSE;
+  // -interface_matis: GMRES with BDDC at every Jacobian; neither MUMPS's analysis (auto) nor a
+  // kept factorisation (lagged) applies.
+  PetscCheck(!a->opt.matis || isolve != 2, a->comm, PETSC_ERR_USER_INPUT, "-interface_solve lagged keeps a factorisation of J; with -interface_matis the preconditioner is BDDC: give -interface_solve direct or auto");
+  a->isolve.solve_auto = isolve == 0 && !a->opt.matis ? PETSC_TRUE : PETSC_FALSE;
   a->isolve.lagged     = isolve == 2 ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(SNESCreate(a->comm, &a->snes));
   if (!a->prefix.empty()) PetscCall(SNESSetOptionsPrefix(a->snes, a->prefix.c_str()));
@@ -131,7 +174,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESSetFunction(a->snes, nullptr, AssemblyFormFunction, a));
   // Both solves precondition with a factorisation of J itself: the lagged one keeps an earlier
   // one in the PC (AssemblyLaggedFactorisation) instead of factoring a copy of J.
-  PetscCall(SNESSetJacobian(a->snes, a->J, a->J, AssemblyFormJacobian, a));
+  PetscCall(SNESSetJacobian(a->snes, a->J, a->isolve.P ? a->isolve.P : a->J, AssemblyFormJacobian, a));
   PetscCall(SNESMonitorSet(a->snes, MonitorJointStates, a, nullptr));
   // Defaults that the command line overrides: Newton with boltnet's line search, direct solve.
   PetscCall(SNESSetType(a->snes, SNESNEWTONLS));
@@ -144,8 +187,27 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, a));
   PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, a));
   PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(PCSetType(pc, PCLU));
-  PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  if (a->isolve.P) {
+    // BDDC on J's MATIS (docs/solver.md, "BDDC"): GMRES, right preconditioned so that it watches
+    // the true residual, to the lagged solve's 1e-10 (J is not symmetric: exact footprint coupling).
+    PetscCall(KSPSetType(ksp, KSPGMRES));
+    PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
+    PetscCall(KSPGMRESSetRestart(ksp, 200));
+    PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 400));
+    PetscCall(PCSetType(pc, PCBDDC));
+    PetscCall(SetBDDCFields(a, pc));
+    // J is not symmetric, and BDDC computes its primal basis functions as for a symmetric matrix
+    // unless -pc_bddc_symmetric false says otherwise (PETSc 3.18 has no function for it, and does
+    // not read MAT_SYMMETRIC): with MUMPS as the Neumann solver, GMRES then stalls near its initial
+    // residual where patches are cut across ranks. So false, unless the command line gives it.
+    PetscBool   given;
+    std::string name = "-" + a->prefix + "pc_bddc_symmetric";
+    PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-pc_bddc_symmetric", &given));
+    if (!given) PetscCall(PetscOptionsSetValue(nullptr, name.c_str(), "false"));
+  } else {
+    PetscCall(PCSetType(pc, PCLU));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  }
   PetscCall(SNESSetConvergenceTest(a->snes, ConvergedInBalance, a, nullptr));
   PetscCall(SNESSetFromOptions(a->snes));
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet convergence checks", "boltnet");
@@ -457,11 +519,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         // A failed factorisation leaves MUMPS in an error state that the next solve would raise as
         // an error: start the next attempt from a fresh factorisation. And name the joints that
         // may have made the tangent singular.
-        KSP         ksp;
-        PC          pc;
         std::string singular;
-        PetscCall(SNESGetKSP(a->snes, &ksp));
-        PetscCall(KSPGetPC(ksp, &pc));
         // A factorisation that failed for want of memory fails the same way at any load: rather
         // than cut the step back and factor again, factor the same step again once with the
         // factors on disk (MUMPS then holds in memory only the fronts it works on: its users'
@@ -473,7 +531,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
           a->isolve.factors_on_disk = PETSC_TRUE;
           PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(), a->isolve.lagged_auto ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk" : ""));
           if (a->isolve.lagged_auto) PetscCall(AssemblyUseDirectKSP(a));
-          PetscCall(PCReset(pc));
+          PetscCall(AssemblyResetPC(a));
           a->isolve.factors_valid = PETSC_FALSE;
           PetscCall(AssemblySetUpNullPivots(a));
           continue;
@@ -490,7 +548,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
           PetscInt nnull;
           PetscCall(AssemblyCheckNullPivots(a, &nnull));
         }
-        PetscCall(PCReset(pc));
+        PetscCall(AssemblyResetPC(a));
         a->isolve.factors_valid = PETSC_FALSE; // the lagged solve refactors from the next Jacobian
         PetscCall(AssemblySetUpNullPivots(a));
         if (!a->checks.singular.empty()) singular = a->checks.singular;
