@@ -115,7 +115,8 @@ foreach(ranks 1 2 3)
 endforeach()
 add_test(NAME bench_plate_grid_solvers_tiny
   COMMAND ${BOLTNET_EXPECT} --match "^\\| 1 \\| MUMPS LU \\(default, condensed\\) \\| [^|]+ \\| converged"
-          --match "^\\| 1 \\| MUMPS LU, kept whole \\| [^|]+ \\| converged" --match "wrote ${BOLTNET_OUT}/bench-solvers-tiny.md"
+          --match "^\\| 1 \\| MUMPS LU, kept whole \\| [^|]+ \\| converged"
+          --match "^\\| 1 \\| GMRES \\+ BDDC, condensed \\| [^|]+ \\| converged" --match "^\\| 1 \\| GMRES \\+ BDDC, kept whole \\| [^|]+ \\| converged" --match "wrote ${BOLTNET_OUT}/bench-solvers-tiny.md"
           -- ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/bench-plate-grid --size tiny --ranks 1 --solvers --timeout 30
           --boltnet $<TARGET_FILE:boltnet_driver> --mpiexec ${MPIEXEC_EXECUTABLE} --out ${BOLTNET_OUT}/bench-solvers-tiny.md)
 set_tests_properties(bench_plate_grid_solvers_tiny PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
