@@ -60,6 +60,17 @@ foreach(ranks 2 3)
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_small_whole_np1/joints.csv ${BOLTNET_OUT}/plate_grid_small_cut_bddc_np${ranks}/joints.csv 1e-8)
   set_tests_properties(plate_grid_small_cut_bddc_np${ranks}_vs_whole PROPERTIES FIXTURES_REQUIRED "plate_grid_small_whole_np1;plate_grid_small_cut_bddc_np${ranks}")
 endforeach()
+# Load cases on one set-up (each case starts from a fresh BDDC, AssemblyResetPC): the strip's
+# tension, bending and bending-back cases on 2 ranks against the exact constant-strain and
+# constant-curvature solutions, as test/cases_tests.cmake checks the direct solve's.
+boltnet_run_bddc(strip_cases 2 ${BOLTNET_TEST_SCENES}/strip-cases.yaml)
+foreach(case_load "tension;tension" "bending;bending" "bending-back;bending")
+  list(GET case_load 0 case)
+  list(GET case_load 1 load)
+  add_test(NAME strip_cases_bddc_${case}_exact_np2
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_strip.py ${BOLTNET_OUT}/strip_cases_bddc_np2/${case} ${load} 72000 20 1.27 1e-8)
+  set_tests_properties(strip_cases_bddc_${case}_exact_np2 PROPERTIES FIXTURES_REQUIRED strip_cases_bddc_np2)
+endforeach()
 # A linear solve that fails (one GMRES iteration allowed, to 1e-14) is cut back with a fresh BDDC
 # (a PCSetUp after PCReset crashes in PETSc 3.18.5's PCBDDCGraphInit), and the run says where it
 # stopped.

@@ -44,6 +44,7 @@ PetscErrorCode BoltnetAssemblyDestroy(BoltnetAssembly *a)
   PetscCall(MatDestroy(&(*a)->Jbase));
   PetscCall(MatDestroy(&(*a)->isolve.P));
   PetscCall(MatDestroy(&(*a)->isolve.Pbase));
+  if (!(*a)->isolve.bddc_option.empty()) PetscCall(PetscOptionsClearValue(nullptr, (*a)->isolve.bddc_option.c_str()));
   PetscCall(VecDestroy(&(*a)->X));
   PetscCall(VecDestroy(&(*a)->Xprev));
   PetscCall(DMDestroy(&(*a)->net.dm));

@@ -409,10 +409,10 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
   }
   // J = the linear part (Jbase) + the joints. In the lagged interface solve the PC may keep the
   // factorisation of an earlier J: the Krylov solve on this J is preconditioned by it.
-  // With -interface_matis, P is J's MATIS: J is assembled as always, and P from its linear part
-  // (Pbase) and the same joint blocks, in this rank's subdomain.
+  // With -interface_matis, P is J's MATIS: a->J is assembled as always, and P from its linear
+  // part (Pbase) and the same joint blocks, in this rank's subdomain.
   const bool matis = a->isolve.P && P == a->isolve.P;
-  Mat        M     = matis ? J : P, Ploc = nullptr;
+  Mat        M     = matis ? a->J : P, Ploc = nullptr;
   PetscCall(MatCopy(a->Jbase, M, SAME_NONZERO_PATTERN));
   if (matis) {
     Mat Bloc;
@@ -474,7 +474,7 @@ static PetscErrorCode AssemblyFormJacobianImpl(SNES snes, Vec X, Mat J, Mat P, v
     js.jac_state[k]   = StateCode(resp[k]);
   }
   if (a->isolve.lagged) PetscCall(AssemblyLaggedFactorisation(a));
-  else if (J != P && !matis) {
+  else if (J != M) { // a J of SNES's own (-snes_mf_operator: matrix-free) is assembled here
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }

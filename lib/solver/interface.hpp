@@ -47,6 +47,7 @@ struct InterfaceSolve {
   // global nodes of this rank's subdomain, sorted (network/jacobian.cpp, CreateSubdomainMatrix).
   Mat                   P = nullptr, Pbase = nullptr;
   std::vector<PetscInt> subdomain_nodes;
+  std::string           bddc_option; // the option boltnet put into the options database, if any (solver/stepper.cpp)
 };
 
 // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md, "When is a step converged").

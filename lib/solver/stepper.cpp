@@ -62,7 +62,8 @@ static PetscErrorCode SetBDDCFields(BoltnetAssembly a, PC pc)
   PetscFunctionBeginUser;
   if (!a->isolve.P) PetscFunctionReturn(0);
   const PetscInt nodes = (PetscInt)a->isolve.subdomain_nodes.size();
-  for (PetscInt f = 0; f < 6; ++f) PetscCall(ISCreateStride(PETSC_COMM_SELF, nodes, f, 6, &fields[f]));
+  // On the PC's communicator, with local sizes, as PCBDDCSetDofsSplittingLocal checks.
+  for (PetscInt f = 0; f < 6; ++f) PetscCall(ISCreateStride(PetscObjectComm((PetscObject)pc), nodes, f, 6, &fields[f]));
   PetscCall(PCBDDCSetDofsSplittingLocal(pc, 6, fields));
   for (PetscInt f = 0; f < 6; ++f) PetscCall(ISDestroy(&fields[f]));
   PetscFunctionReturn(0);
@@ -203,7 +204,10 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
     PetscBool   given;
     std::string name = "-" + a->prefix + "pc_bddc_symmetric";
     PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-pc_bddc_symmetric", &given));
-    if (!given) PetscCall(PetscOptionsSetValue(nullptr, name.c_str(), "false"));
+    if (!given) {
+      PetscCall(PetscOptionsSetValue(nullptr, name.c_str(), "false"));
+      a->isolve.bddc_option = name; // cleared again with the assembly
+    }
   } else {
     PetscCall(PCSetType(pc, PCLU));
     PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
