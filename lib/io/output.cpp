@@ -260,6 +260,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   KSPType        ktype;
   PCType         ptype;
   MatSolverType  stype = nullptr;
+  PetscBool      ew;
   PetscFunctionBeginUser;
   PetscCall(SNESGetLineSearch(snes, &ls));
   PetscCall(SNESLineSearchGetType(ls, &lstype));
@@ -268,6 +269,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCGetType(pc, &ptype));
   PetscCall(PCFactorGetMatSolverType(pc, &stype));
+  PetscCall(SNESKSPGetUseEW(snes, &ew));
   PetscCall(ResidentMemory(a->comm, true, &out->peak_mb));
   std::string why;
   if (a->rank == 0) {
@@ -284,7 +286,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
     for (size_t i = 0; i < a->steps.size(); ++i) j << (i ? ", " : "") << a->steps[i].cutbacks;
     j << "],\n  \"stuck_linear\": " << (a->opt.stuck_linear ? "true" : "false") << ",\n  \"frozen_share\": " << JsonNumber(a->joints.joint_steps ? (double)a->joints.frozen_joint_steps / (double)a->joints.joint_steps : 0.0)
       << ",\n  \"released\": " << a->joints.released << ",\n  \"jacobians_assembled\": " << a->joints.jac_assembled << ",\n  \"jacobians_reused\": " << a->joints.jac_reused
-      << ",\n  \"interface_solve\": " << JsonString(a->isolve.P ? "bddc" : a->isolve.lagged ? "lagged" : "direct") << ",\n  \"linear_solves\": " << a->isolve.linear_solves << ",\n  \"krylov_iterations\": " << a->isolve.krylov_its << ",\n  \"lagged_factorisations\": " << a->isolve.factorisations << ",\n  \"jacobians_kept\": " << a->isolve.kept << ",\n  \"factors_on_disk\": " << (a->isolve.factors_on_disk ? "true" : "false");
+      << ",\n  \"interface_solve\": " << JsonString(a->isolve.P ? "bddc" : a->isolve.lagged ? "lagged" : "direct") << ",\n  \"linear_solves\": " << a->isolve.linear_solves << ",\n  \"krylov_iterations\": " << a->isolve.krylov_its << ",\n  \"ksp_ew\": " << (ew ? "true" : "false") << ",\n  \"lagged_factorisations\": " << a->isolve.factorisations << ",\n  \"jacobians_kept\": " << a->isolve.kept << ",\n  \"factors_on_disk\": " << (a->isolve.factors_on_disk ? "true" : "false");
     j << ",\n  \"most_loaded_joint\": ";
     if (out->most_joint >= 0) j << "{\"joint\": " << out->most_joint << ", \"step\": " << out->most_step << ", \"load\": " << JsonNumber(out->most_load) << ", \"in_plane_force\": " << JsonNumber(out->most_force) << "}";
     else j << "null";

@@ -269,6 +269,10 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
 PetscErrorCode AssemblyResetPC(BoltnetAssembly a);
 // The lagged interface solve's Krylov method (GMRES, right preconditioned) on the SNES's KSP.
 PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a);
+// Eisenstat-Walker's tolerances for the lagged solve unless -snes_ksp_ew or -ksp_rtol is given, and
+// their removal where the solve turns out direct (solver/stepper.cpp).
+PetscErrorCode AssemblyDefaultEW(BoltnetAssembly a);
+PetscErrorCode AssemblyDropDefaultEW(BoltnetAssembly a);
 // Back to the direct solve (a KSP that applies the factorisation, refactored whenever J changes),
 // where the automatic choice had taken the lagged one and the factors then had to go to disk.
 PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a);

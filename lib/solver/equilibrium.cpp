@@ -318,7 +318,10 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   const bool   lagged   = preonly && icntl22 == 0 && ratio >= a->isolve.lagged_flops_per_entry;
   PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, (double)a->isolve.lagged_flops_per_entry,
                       icntl22 ? "; factors on disk" : "", preonly ? "" : "; the KSP is not the default's"));
-  if (!lagged) PetscFunctionReturn(0);
+  if (!lagged) {
+    PetscCall(AssemblyDropDefaultEW(a)); // a direct solve has no Krylov tolerance to set
+    PetscFunctionReturn(0);
+  }
   // This analysis's factorisation is the lagged solve's first: the KSP becomes GMRES at the next
   // Newton iteration (AssemblyFormJacobian), when no solve is under way.
   a->isolve.lagged        = PETSC_TRUE;
@@ -327,7 +330,7 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   a->isolve.factorisations = 1;
   PetscInt N;
   PetscCall(MatGetSize(F, &N, nullptr));
-  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio, (double)a->isolve.lagged_flops_per_entry));
+  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges, to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio, (double)a->isolve.lagged_flops_per_entry));
   PetscFunctionReturn(0);
 }
 

@@ -22,6 +22,9 @@ struct InterfaceSolve {
   PetscBool solve_auto             = PETSC_TRUE;
   PetscBool lagged_ksp             = PETSC_FALSE; // the KSP is set up for the lagged solve
   PetscBool lagged_auto            = PETSC_FALSE; // lagged by auto's choice: direct again if the factors go to disk
+  PetscBool ew_default             = PETSC_FALSE; // Eisenstat-Walker's tolerances set by the lagged solve, not by the user
+  PetscReal rtol_before_ew         = 1e-10;       // the KSP's own relative tolerance, given back when they are dropped
+  PetscReal ew_rtol_max            = 0.5;         // their largest forcing term (PETSc's default 0.9: solver/stepper.cpp)
   PetscReal lagged_flops_per_entry = 1000;
   PetscInt  refactor_its           = 25;
   PetscBool factors_valid          = PETSC_FALSE; // the PC's factors are of a Jacobian of this analysis

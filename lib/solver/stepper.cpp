@@ -18,10 +18,59 @@
 namespace boltnet {
 namespace {
 PetscErrorCode ConvergedInBalance(SNES, PetscInt, PetscReal, PetscReal, PetscReal, SNESConvergedReason *, void *);
+PetscErrorCode AtFloorInBalance(BoltnetAssembly, Vec, Vec, PetscReal, PetscBool *);
+}
+
+// Eisenstat-Walker's tolerances (SNESKSPSetUseEW) for the lagged solve's GMRES, unless the command
+// line gives -snes_ksp_ew or -ksp_rtol. Each GMRES iteration is a triangular solve with the factors,
+// and far from the solution a Newton step needs no solve to 1e-10: the forcing term follows the
+// residual's own decrease (docs/solver.md, "Inexact Newton"). Set from the first Newton iteration
+// on whenever the solve may be lagged, so that the forcing term of the first GMRES solve already
+// has the residual it follows; AssemblyDropDefaultEW takes it back where the solve is direct.
+PetscErrorCode AssemblyDefaultEW(BoltnetAssembly a)
+{
+  const char *prefix;
+  PetscBool   ew_given, rtol_given, ksp_given;
+  KSP         ksp;
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  if (a->isolve.ew_default) { // already on: the lagged KSP has just been given its own tolerance
+    PetscCall(KSPGetTolerances(ksp, &a->isolve.rtol_before_ew, nullptr, nullptr, nullptr));
+    PetscFunctionReturn(0);
+  }
+  PetscCall(SNESGetOptionsPrefix(a->snes, &prefix));
+  PetscCall(PetscOptionsHasName(nullptr, prefix, "-snes_ksp_ew", &ew_given));
+  PetscCall(PetscOptionsHasName(nullptr, prefix, "-ksp_rtol", &rtol_given));
+  PetscCall(PetscOptionsHasName(nullptr, prefix, "-ksp_type", &ksp_given));
+  // With the user's own Krylov method auto stays direct (solver/equilibrium.cpp): that KSP keeps
+  // its tolerance.
+  if (ew_given || rtol_given || (ksp_given && !a->isolve.lagged)) PetscFunctionReturn(0);
+  PetscCall(KSPGetTolerances(ksp, &a->isolve.rtol_before_ew, nullptr, nullptr, nullptr));
+  PetscCall(SNESKSPSetUseEW(a->snes, PETSC_TRUE));
+  // PETSc's parameters but the largest forcing term, 0.5 instead of 0.9: a direction that leaves
+  // 90 % of the residual to GMRES is no descent direction for the line search once joints change
+  // state (fig3a lagged: a step cut back at 0.9, none at 0.5); -snes_ksp_ew_rtolmax still decides.
+  PetscCall(SNESKSPSetParametersEW(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, a->isolve.ew_rtol_max, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  a->isolve.ew_default = PETSC_TRUE;
+  PetscFunctionReturn(0);
+}
+
+// Eisenstat-Walker set a tolerance at each solve's start: the KSP gets its own back.
+PetscErrorCode AssemblyDropDefaultEW(BoltnetAssembly a)
+{
+  KSP ksp;
+  PetscFunctionBeginUser;
+  if (!a->isolve.ew_default) PetscFunctionReturn(0);
+  PetscCall(SNESKSPSetUseEW(a->snes, PETSC_FALSE));
+  PetscCall(SNESGetKSP(a->snes, &ksp));
+  PetscCall(KSPSetTolerances(ksp, a->isolve.rtol_before_ew, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  a->isolve.ew_default = PETSC_FALSE;
+  PetscFunctionReturn(0);
 }
 
 // The lagged solve's Krylov method: GMRES, right preconditioned so that it watches the true
-// residual of J, to 1e-10 of it. Called at set-up, or by the automatic choice before the Newton
+// residual of J, to Eisenstat-Walker's tolerances by default (above), else to 1e-10 of it unless
+// -ksp_rtol says otherwise. Called at set-up, or by the automatic choice before the Newton
 // iteration after MUMPS's first analysis (a KSP's type cannot change inside its own solve).
 PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
 {
@@ -32,6 +81,7 @@ PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
   PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
   PetscCall(KSPGMRESSetRestart(ksp, 100));
   PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
+  PetscCall(AssemblyDefaultEW(a));
   a->isolve.lagged_ksp = PETSC_TRUE;
   PetscFunctionReturn(0);
 }
@@ -47,6 +97,7 @@ PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   PetscCall(KSPSetType(ksp, KSPPREONLY));
   PetscCall(SNESSetLagPreconditioner(a->snes, 1));
+  PetscCall(AssemblyDropDefaultEW(a));
   a->isolve.lagged = a->isolve.lagged_ksp = a->isolve.lagged_auto = PETSC_FALSE;
   a->isolve.factorisations = 0;
   PetscFunctionReturn(0);
@@ -151,7 +202,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   const char *isolves[] = {"auto", "direct", "lagged"};
   PetscInt    isolve    = a->isolve.solve_auto ? 0 : a->isolve.lagged ? 2 : 1;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
-  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations; to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
   PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, and the factors stay in memory", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry, &a->isolve.lagged_flops_per_entry, nullptr));
   PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->isolve.out_of_core, &a->isolve.out_of_core, nullptr));
   PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->isolve.memory_mb, &a->isolve.memory_mb, nullptr));
@@ -185,6 +236,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(SNESGetKSP(a->snes, &ksp));
   if (a->isolve.lagged) PetscCall(AssemblyUseLaggedKSP(a));
   else PetscCall(KSPSetType(ksp, KSPPREONLY));
+  if (a->isolve.solve_auto) PetscCall(AssemblyDefaultEW(a)); // until MUMPS's first analysis chooses
   PetscCall(KSPSetPreSolve(ksp, BeginInterfaceSolve, a));
   PetscCall(KSPSetPostSolve(ksp, EndInterfaceSolve, a));
   PetscCall(KSPGetPC(ksp, &pc));
@@ -259,10 +311,23 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
     }
   }
   if (*reason != SNES_CONVERGED_ITERATING || it == 0) PetscFunctionReturn(0);
-  Vec       X, F, share, bound;
-  PetscReal worst;
+  Vec       X, F;
+  PetscBool floor;
   PetscCall(SNESGetSolution(snes, &X));
   PetscCall(SNESGetFunction(snes, &F, nullptr, nullptr));
+  PetscCall(AtFloorInBalance(a, X, F, fnorm, &floor));
+  if (floor) *reason = SNES_CONVERGED_FNORM_ABS;
+  PetscFunctionReturn(0);
+}
+
+// The "round-off" half of the test above: every row of F(X) at its floor and the step in balance.
+PetscErrorCode AtFloorInBalance(BoltnetAssembly a, Vec X, Vec F, PetscReal fnorm, PetscBool *floor)
+{
+  Vec       share, bound;
+  PetscReal worst;
+  SNES      snes = a->snes;
+  PetscFunctionBeginUser;
+  *floor = PETSC_FALSE;
   if (!a->checks.Jlast) PetscFunctionReturn(0);
   // Row by row: |F_i| <= 100 eps (|J| |x|)_i, the round-off of the terms summed in that row. A row
   // of a soft part is not judged by the stiffest row (a loader spring, a joint's rotational
@@ -281,7 +346,7 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
     PetscCall(AssemblyEquilibrium(a, X, &eq));
     if (eq.ratio <= a->checks.equilibrium_rtol) {
       PetscCall(PetscInfo(snes, "Converged to round-off: every |F_i| <= 100 eps (|J| |x|)_i (||F|| %g), %s\n", (double)fnorm, DescribeEquilibrium(eq).c_str()));
-      *reason = SNES_CONVERGED_FNORM_ABS;
+      *floor = PETSC_TRUE;
     } else PetscCall(PetscInfo(snes, "At the round-off floor of every row but not in balance: %s\n", DescribeEquilibrium(eq).c_str()));
   }
   PetscFunctionReturn(0);
@@ -445,6 +510,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
                                        // and not reset by a converged sub-step, else a load the structure
                                        // cannot carry (a mechanism at 450 N) is approached by ever
                                        // smaller sub-steps forever
+    PetscBool exact  = PETSC_FALSE;    // this attempt solves to 1e-10, not to Eisenstat-Walker's tolerances
     while (a->lambda != target) {
       const PetscBool last = std::abs(target - a->lambda) <= std::abs(sub) * (1 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
       a->lambda_target     = last ? target : a->lambda + sub;
@@ -463,6 +529,22 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
       PetscCall(SNESGetConvergedReason(a->snes, &reason));
       PetscCall(SNESGetIterationNumber(a->snes, &its));
       PetscCall(RecordLinearSolves(a));
+      // A predicted step must take a Newton iteration (SNESSetForceIteration), and where the
+      // prediction is already at the round-off floor that iteration cannot lower ||F||: its line
+      // search fails. The prediction is then the solution, by the same test an iteration would meet.
+      if (reason == SNES_DIVERGED_LINE_SEARCH && its == 0 && predicted) {
+        VecHandle F0;
+        PetscReal fnorm;
+        PetscBool floor;
+        PetscCall(VecDuplicate(Xtry, F0.out()));
+        PetscCall(SNESComputeFunction(a->snes, Xtry, F0.get()));
+        PetscCall(VecNorm(F0.get(), NORM_2, &fnorm));
+        PetscCall(AtFloorInBalance(a, Xtry, F0.get(), fnorm, &floor));
+        if (floor) {
+          PetscCall(PetscInfo(a->snes, "step %zu: the predicted iterate is at the round-off floor and in balance; its line search could not go below it\n", a->steps.size() + 1));
+          reason = SNES_CONVERGED_FNORM_ABS;
+        }
+      }
       // Joints solved as linear springs must still be stuck under the full law at the solution;
       // those that are not are released and the solve goes on from there. What is accepted is
       // then a solution of the full model.
@@ -483,6 +565,9 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         its += more;
       }
       PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
+      const PetscBool was_exact = exact;
+      if (exact) PetscCall(SNESKSPSetUseEW(a->snes, PETSC_TRUE)); // the next attempt is inexact again
+      exact = PETSC_FALSE;
       // Whatever SNES's test said, a converged step balances its loads (docs/solver.md): the
       // out-of-balance force against the problem's force scale, not against ||F0|| or ||J||.
       std::string why      = SNESConvergedReasons[reason];
@@ -515,6 +600,18 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         else a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i, sub, halved};
         if (a->on_step) PetscCall(a->on_step(a, info));
         if (a->opt.progress) PetscCall(PrintProgress(a, info, targets, (size_t)i, halved, done0, t0)); // once the step's results are out
+        continue;
+      }
+      // Inexact directions (the lagged solve's default: docs/solver.md, "Inexact Newton") can fail
+      // the line search where a joint changes state; before cutting the step back, the same step is
+      // solved once more with the linear solves to the KSP's own tolerance.
+      if (a->isolve.ew_default && !was_exact && reason != SNES_DIVERGED_LINEAR_SOLVE) {
+        KSP ksp;
+        PetscCall(SNESGetKSP(a->snes, &ksp));
+        PetscCall(SNESKSPSetUseEW(a->snes, PETSC_FALSE));
+        PetscCall(KSPSetTolerances(ksp, a->isolve.rtol_before_ew, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+        PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu did not converge at load factor %g (%s) with Eisenstat-Walker's tolerances; solving it again with GMRES to %g\n", a->steps.size() + 1, (double)a->lambda_target, why.c_str(), (double)a->isolve.rtol_before_ew));
+        exact = PETSC_TRUE;
         continue;
       }
       std::string chatter;
