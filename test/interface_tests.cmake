@@ -212,23 +212,23 @@ set_tests_properties(log_view_interface_solve_lagged PROPERTIES ENVIRONMENT "${B
 # -snes_ksp_ew still reaches every linear solve: the interface event's hooks take the place of
 # SNES's own KSP hooks (KSPPreSolve_SNESEW, where Eisenstat-Walker sets the tolerance) and must
 # call them. PETSc reports each tolerance it sets under -info; check_ksp_ew.py checks one per
-# linear solve and the first of each step at the given -snes_ksp_ew_rtol0 (PETSc's definition of
-# the method). The lagged solve on the small grid, where GMRES uses the tolerance; 1 to 3 ranks.
-foreach(ranks 1 2 3)
-  add_test(NAME lagged_snes_ksp_ew_np${ranks}
-    COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged -snes_ksp_ew -snes_ksp_ew_rtol0 0.25 -info :snes > \"$3.log\" && \"$5\" \"$6\" \"$3.log\" \"$3/summary.json\" 0.25"
-            ${MPIEXEC_EXECUTABLE} ${ranks} $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/lagged_ksp_ew_np${ranks} ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_ksp_ew.py)
-  set_tests_properties(lagged_snes_ksp_ew_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
-endforeach()
-# Without -snes_ksp_ew the lagged solve takes Eisenstat-Walker's tolerances all the same
-# (solver/stepper.cpp, AssemblyDefaultEW): every linear solve gets one, the first of each step
-# PETSc's default rtol_0, 0.3 (SNESKSPSetParametersEW), none above boltnet's largest, 0.5. The joints stay the direct solve's: the
-# *_lagged_same_as_direct tests above run with these defaults. 1 to 3 ranks.
-foreach(ranks 1 2 3)
-  add_test(NAME lagged_default_ksp_ew_np${ranks}
-    COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged -info :snes > \"$3.log\" && \"$5\" \"$6\" \"$3.log\" \"$3/summary.json\" 0.3 0.5"
-            ${MPIEXEC_EXECUTABLE} ${ranks} $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/lagged_default_ksp_ew_np${ranks} ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_ksp_ew.py)
-  set_tests_properties(lagged_default_ksp_ew_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
+# linear solve, the first of each step at rtol_0 and none above rtol_max (PETSc's definition of the
+# method). The lagged solve on the small grid, where GMRES uses the tolerance; 1 to 3 ranks:
+# - lagged_snes_ksp_ew: given, with -snes_ksp_ew_rtol0 0.25 (PETSc's rtol_max, 0.9);
+# - lagged_default_ksp_ew: not given, the lagged solve's default (solver/stepper.cpp,
+#   AssemblyDefaultEW): PETSc's rtol_0, 0.3, and boltnet's rtol_max, 0.5. The joints stay the
+#   direct solve's: the *_lagged_same_as_direct tests above run with these defaults.
+foreach(case "lagged_snes_ksp_ew;lagged_ksp_ew;-snes_ksp_ew -snes_ksp_ew_rtol0 0.25;0.25 0.9" "lagged_default_ksp_ew;lagged_default_ksp_ew;;0.3 0.5")
+  list(GET case 0 name)
+  list(GET case 1 dir)
+  list(GET case 2 opts)
+  list(GET case 3 rtols)
+  foreach(ranks 1 2 3)
+    add_test(NAME ${name}_np${ranks}
+      COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged $7 -info :snes > \"$3.log\" && \"$5\" \"$6\" \"$3.log\" \"$3/summary.json\" $8"
+              ${MPIEXEC_EXECUTABLE} ${ranks} $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/${dir}_np${ranks} ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_ksp_ew.py "${opts}" "${rtols}")
+    set_tests_properties(${name}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
+  endforeach()
 endforeach()
 # The user's tolerance wins: with -ksp_rtol or -snes_ksp_ew false no solve gets an Eisenstat-Walker
 # tolerance; nor does the direct solve, which has no Krylov tolerance to set.

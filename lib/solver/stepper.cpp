@@ -566,7 +566,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
       }
       PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
       const PetscBool was_exact = exact;
-      if (exact) PetscCall(SNESKSPSetUseEW(a->snes, PETSC_TRUE)); // the next attempt is inexact again
+      if (exact && a->isolve.ew_default) PetscCall(SNESKSPSetUseEW(a->snes, PETSC_TRUE)); // the next attempt is inexact again, unless the solve went direct
       exact = PETSC_FALSE;
       // Whatever SNES's test said, a converged step balances its loads (docs/solver.md): the
       // out-of-balance force against the problem's force scale, not against ||F0|| or ||J||.
