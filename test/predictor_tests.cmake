@@ -33,8 +33,8 @@ endforeach()
 # converges to its closed form. Without that allowance (-snes_max_fail 0 gives a predicted step what
 # the default 1 gave it before) the forced first iteration's line search fails at step 2; the
 # stepper then judges the prediction by the same round-off and balance test
-# (solver/stepper.cpp, AtFloorInBalance) and accepts it: the run converges, says so under -info
-# (9 steps here), and matches the closed form too. (Before that test, this run stopped at step 2.)
+# (solver/stepper.cpp, AtFloorInBalance) and accepts it: the run converges, says so under -info,
+# and matches the closed form too, on 1, 2 and 3 ranks. (Before that test, this run stopped at step 2.)
 set(out ${BOLTNET_OUT}/predictor_fig3c_bt_np1)
 boltnet_expect(predictor_fig3c_bt 1 --match "36 steps converged \\(0 cut-backs\\)" --
   $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${out}
@@ -42,10 +42,13 @@ boltnet_expect(predictor_fig3c_bt 1 --match "36 steps converged \\(0 cut-backs\\
 add_test(NAME predictor_fig3c_bt_closed_form_np1
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${out}/joints.csv 1.5e5 5000 4e4 0.05 3000)
 set_tests_properties(predictor_fig3c_bt_closed_form_np1 PROPERTIES DEPENDS predictor_fig3c_bt_np1)
-boltnet_expect(predictor_fig3c_bt_no_allowance 1 --match "36 steps converged \\(0 cut-backs\\)"
-  --match "step 2: the predicted iterate is at the round-off floor and in balance" --
-  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml -output_dir ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance
-  -load_steps 12 -load_max_cuts 0 -snes_linesearch_type bt -snes_max_fail 0 -info :snes)
-add_test(NAME predictor_fig3c_bt_no_allowance_closed_form_np1
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance/joints.csv 1.5e5 5000 4e4 0.05 3000)
-set_tests_properties(predictor_fig3c_bt_no_allowance_closed_form_np1 PROPERTIES DEPENDS predictor_fig3c_bt_no_allowance_np1)
+foreach(ranks 1 2 3)
+  boltnet_expect(predictor_fig3c_bt_no_allowance ${ranks} --match "36 steps converged \\(0 cut-backs\\)"
+    --match "step [0-9]+: the predicted iterate is at the round-off floor and in balance" --
+    ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml
+    -output_dir ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance_np${ranks}
+    -load_steps 12 -load_max_cuts 0 -snes_linesearch_type bt -snes_max_fail 0 -info :snes)
+  add_test(NAME predictor_fig3c_bt_no_allowance_closed_form_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance_np${ranks}/joints.csv 1.5e5 5000 4e4 0.05 3000)
+  set_tests_properties(predictor_fig3c_bt_no_allowance_closed_form_np${ranks} PROPERTIES DEPENDS predictor_fig3c_bt_no_allowance_np${ranks})
+endforeach()

@@ -510,7 +510,6 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
                                        // and not reset by a converged sub-step, else a load the structure
                                        // cannot carry (a mechanism at 450 N) is approached by ever
                                        // smaller sub-steps forever
-    PetscBool exact  = PETSC_FALSE;    // this attempt solves to 1e-10, not to Eisenstat-Walker's tolerances
     while (a->lambda != target) {
       const PetscBool last = std::abs(target - a->lambda) <= std::abs(sub) * (1 + 1e-12) ? PETSC_TRUE : PETSC_FALSE;
       a->lambda_target     = last ? target : a->lambda + sub;
@@ -565,9 +564,6 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         its += more;
       }
       PetscCall(SNESSetTolerances(a->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, maxit, PETSC_DEFAULT));
-      const PetscBool was_exact = exact;
-      if (exact && a->isolve.ew_default) PetscCall(SNESKSPSetUseEW(a->snes, PETSC_TRUE)); // the next attempt is inexact again, unless the solve went direct
-      exact = PETSC_FALSE;
       // Whatever SNES's test said, a converged step balances its loads (docs/solver.md): the
       // out-of-balance force against the problem's force scale, not against ||F0|| or ||J||.
       std::string why      = SNESConvergedReasons[reason];
@@ -600,18 +596,6 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         else a->path = PathPosition{a->path.start, a->path.ntargets, (PetscInt)i, sub, halved};
         if (a->on_step) PetscCall(a->on_step(a, info));
         if (a->opt.progress) PetscCall(PrintProgress(a, info, targets, (size_t)i, halved, done0, t0)); // once the step's results are out
-        continue;
-      }
-      // Inexact directions (the lagged solve's default: docs/solver.md, "Inexact Newton") can fail
-      // the line search where a joint changes state; before cutting the step back, the same step is
-      // solved once more with the linear solves to the KSP's own tolerance.
-      if (a->isolve.ew_default && !was_exact && reason != SNES_DIVERGED_LINEAR_SOLVE) {
-        KSP ksp;
-        PetscCall(SNESGetKSP(a->snes, &ksp));
-        PetscCall(SNESKSPSetUseEW(a->snes, PETSC_FALSE));
-        PetscCall(KSPSetTolerances(ksp, a->isolve.rtol_before_ew, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-        PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu did not converge at load factor %g (%s) with Eisenstat-Walker's tolerances; solving it again with GMRES to %g\n", a->steps.size() + 1, (double)a->lambda_target, why.c_str(), (double)a->isolve.rtol_before_ew));
-        exact = PETSC_TRUE;
         continue;
       }
       std::string chatter;
