@@ -147,7 +147,7 @@ foreach(ranks 2 3)
   set_tests_properties(plate_grid_small_auto_lagged_np${ranks}_same_as_direct PROPERTIES FIXTURES_REQUIRED "plate_grid_small_np2;plate_grid_small_auto_lagged_np${ranks}")
 endforeach()
 # Factors on disk are read back at every triangular solve, and a Krylov method the user chose is
-# the user's: with either, auto stays direct whatever the estimate. (Factors on disk: lap-rows in
+# the user's: with either, auto stays direct at an estimate that makes it lagged in core. (Factors on disk: lap-rows in
 # the global system, whose in-core estimate, 55 MB, is above the 30 MB given, as in
 # test/memory_tests.cmake's factor_memory_estimate.)
 boltnet_expect(lap_rows_auto_on_disk_direct 1 --match "the factors go to disk" --match "steps converged" --reject "the interface solve is lagged"
@@ -158,7 +158,26 @@ boltnet_expect(chain_auto_user_ksp_direct 1 --match "steps converged" --reject "
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/chain_auto_user_ksp
   -interface_lagged_flops_per_entry 1 -ksp_type gmres)
 set_tests_properties(chain_auto_user_ksp_direct_np1 PROPERTIES FIXTURES_SETUP chain_auto_user_ksp)
-foreach(case lap_rows_auto_on_disk chain_auto_user_ksp)
+# With factors on disk auto needs a dearer factorisation (-interface_lagged_flops_per_entry_on_disk:
+# the full junction's 4,444 flops per entry against the default 2,500) and Eisenstat-Walker's
+# tolerances, which keep GMRES to a few solves per Newton iteration. Both at 1 flop per entry,
+# lap-rows goes lagged on disk, one factorisation, and keeps the closed-form load shares; with
+# -snes_ksp_ew false it stays direct.
+boltnet_expect(lap_rows_auto_on_disk_lagged 1 --match "the factors go to disk" --match "the interface solve is lagged" --match "steps converged"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged
+  -output_fields false -patch_condense false -interface_lagged_flops_per_entry 1 -interface_lagged_flops_per_entry_on_disk 1 -interface_memory_mb 30)
+set_tests_properties(lap_rows_auto_on_disk_lagged_np1 PROPERTIES FIXTURES_SETUP lap_rows_auto_on_disk_lagged)
+add_test(NAME lap_rows_auto_on_disk_lagged_summary
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk'], s['ksp_ew'], s['lagged_factorisations'], s['factor_flops_per_entry']); sys.exit(0 if s['interface_solve'] == 'lagged' and s['factors_on_disk'] and s['ksp_ew'] and s['lagged_factorisations'] == 1 and s['factor_flops_per_entry'] > 1 else 1)"
+          ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged/summary.json)
+add_test(NAME lap_rows_auto_on_disk_lagged_load_shares
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged/joints.csv 21820 72000 20 1.27 20)
+set_tests_properties(lap_rows_auto_on_disk_lagged_summary lap_rows_auto_on_disk_lagged_load_shares PROPERTIES FIXTURES_REQUIRED lap_rows_auto_on_disk_lagged)
+boltnet_expect(lap_rows_auto_no_ew_on_disk_direct 1 --match "the factors go to disk" --match "steps converged" --reject "the interface solve is lagged"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/lap_rows_auto_no_ew_on_disk
+  -output_fields false -patch_condense false -interface_lagged_flops_per_entry 1 -interface_lagged_flops_per_entry_on_disk 1 -interface_memory_mb 30 -snes_ksp_ew false)
+set_tests_properties(lap_rows_auto_no_ew_on_disk_direct_np1 PROPERTIES FIXTURES_SETUP lap_rows_auto_no_ew_on_disk)
+foreach(case lap_rows_auto_on_disk lap_rows_auto_no_ew_on_disk chain_auto_user_ksp)
   add_test(NAME ${case}_is_direct
     COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk'], 'ksp_ew', s['ksp_ew']); sys.exit(0 if s['interface_solve'] == 'direct' and s['lagged_factorisations'] == 0 and s['factors_on_disk'] == sys.argv[2].endswith('on_disk') and not s['ksp_ew'] else 1)"
             ${BOLTNET_OUT}/${case}/summary.json ${case})
@@ -166,6 +185,8 @@ foreach(case lap_rows_auto_on_disk chain_auto_user_ksp)
 endforeach()
 boltnet_expect(interface_lagged_flops_bad 1 --fail --max-lines 1 --match "-interface_lagged_flops_per_entry 0\\.? must be > 0"
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/lagged_flops_bad -interface_lagged_flops_per_entry 0)
+boltnet_expect(interface_lagged_flops_on_disk_bad 1 --fail --max-lines 1 --match "-interface_lagged_flops_per_entry_on_disk -3\\.? must be > 0"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/lagged_flops_on_disk_bad -interface_lagged_flops_per_entry_on_disk -3)
 boltnet_expect(interface_solve_bad 1 --fail --match "auto" --match "direct" --match "lagged"
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/chain.yaml -output_dir ${BOLTNET_OUT}/interface_solve_bad -interface_solve sometimes)
 

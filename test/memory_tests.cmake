@@ -41,24 +41,34 @@ foreach(ranks 1 2 3)
   set_tests_properties(factor_out_of_core_load_shares_np${ranks} PROPERTIES FIXTURES_REQUIRED factor_out_of_core_np${ranks})
 endforeach()
 # A lagged solve that -interface_solve auto chose in core (the threshold at 1 flop per entry) turns
-# direct again when the factorisation runs out of memory and the factors go to disk, as auto would
-# have chosen with factors on disk (docs/solver.md, "Which one the default takes"); the retry still
-# converges to the closed-form load shares.
+# direct again when the factorisation runs out of memory and the factors go to disk, below auto's
+# threshold for factors on disk (docs/solver.md, "Which one the default takes"), and stays lagged
+# with that threshold at 1 too; either retry converges to the closed-form load shares.
 foreach(ranks 1 2 3)
-  set(out ${BOLTNET_OUT}/factor_out_of_core_auto_lagged_np${ranks})
-  add_test(NAME factor_out_of_core_auto_lagged_np${ranks}
-    COMMAND ${BOLTNET_EXPECT} --match "the interface solve is lagged" --match "factoring again with the factors on disk .*; the interface solve is direct again"
-            --match "1 steps converged \\(0 cut-backs\\)" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver>
-            -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 30
-            -interface_lagged_flops_per_entry 1 -malloc_debug -malloc_dump)
-  set_tests_properties(factor_out_of_core_auto_lagged_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}"
-    FIXTURES_SETUP factor_out_of_core_auto_lagged_np${ranks} FAIL_REGULAR_EXPRESSION "PETSC ERROR;bytes [A-Za-z_0-9]+\\(\\) at ")
-  add_test(NAME factor_out_of_core_auto_lagged_direct_np${ranks}
-    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk']); sys.exit(0 if s['interface_solve'] == 'direct' and s['factors_on_disk'] else 1)" ${out}/summary.json)
-  add_test(NAME factor_out_of_core_auto_lagged_load_shares_np${ranks}
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
-  set_tests_properties(factor_out_of_core_auto_lagged_direct_np${ranks} factor_out_of_core_auto_lagged_load_shares_np${ranks}
-    PROPERTIES FIXTURES_REQUIRED factor_out_of_core_auto_lagged_np${ranks})
+  foreach(case direct lagged)
+    set(out ${BOLTNET_OUT}/factor_out_of_core_auto_${case}_np${ranks})
+    if(case STREQUAL "direct")
+      set(extra --match "factoring again with the factors on disk" --match "the interface solve is direct again, as -interface_solve auto chooses with factors on disk below -interface_lagged_flops_per_entry_on_disk")
+      set(opts "")
+      set(name factor_out_of_core_auto_lagged_np${ranks})
+    else()
+      set(extra --match "factoring again with the factors on disk" --reject "direct again")
+      set(opts -interface_lagged_flops_per_entry_on_disk 1)
+      set(name factor_out_of_core_auto_stays_lagged_np${ranks})
+    endif()
+    add_test(NAME ${name}
+      COMMAND ${BOLTNET_EXPECT} --match "the interface solve is lagged" ${extra}
+              --match "1 steps converged \\(0 cut-backs\\)" -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver>
+              -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${out} -output_fields false -patch_condense false -mat_mumps_icntl_23 30
+              -interface_lagged_flops_per_entry 1 ${opts} -malloc_debug -malloc_dump)
+    set_tests_properties(${name} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}"
+      FIXTURES_SETUP ${name} FAIL_REGULAR_EXPRESSION "PETSC ERROR;bytes [A-Za-z_0-9]+\\(\\) at ")
+    add_test(NAME ${name}_${case}
+      COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk']); sys.exit(0 if s['interface_solve'] == sys.argv[2] and s['factors_on_disk'] else 1)" ${out}/summary.json ${case})
+    add_test(NAME ${name}_load_shares
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+    set_tests_properties(${name}_${case} ${name}_load_shares PROPERTIES FIXTURES_REQUIRED ${name})
+  endforeach()
 endforeach()
 # -interface_out_of_core false: the first failure stops the run.
 boltnet_expect(factor_no_out_of_core 1 --status 3

@@ -294,10 +294,11 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
 // "The interface solve"). A lagged Newton iteration costs a dozen or more triangular solves with the
 // factors (GMRES), a direct one a factorisation at most: the lagged solve pays where a factorisation
 // costs many solves. MUMPS's estimates say so before anything is factored: the factorisation's flops
-// (RINFOG(1)) per entry of the factors (INFOG(20)), an entry being read about once per solve. Factors
-// on disk are read back from disk at every solve, and another Krylov method or preconditioner than
-// the default's is the user's own choice: both stay direct. The estimates are global, so every rank
-// decides alike, and they depend on the matrix alone, so a run repeats its choice.
+// (RINFOG(1)) per entry of the factors (INFOG(20)), an entry being read about once per solve; factors
+// on disk are read back from disk at every solve and need a dearer factorisation (AutoTakesLagged in
+// solver/interface.hpp). Another Krylov method or preconditioner than the default's is the user's
+// own choice: it stays direct. The estimates are global, so every rank decides alike, and they
+// depend on the matrix alone, so a run repeats its choice.
 static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
 {
   PetscInt  info1, entries, icntl22;
@@ -315,9 +316,11 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   PetscCall(MatMumpsGetInfog(F, 20, &entries)); // in millions when negative (MUMPS users' guide)
   const double nentries = entries < 0 ? -1e6 * (double)entries : (double)entries;
   const double ratio    = nentries > 0 ? flops / nentries : 0;
-  const bool   lagged   = preonly && icntl22 == 0 && ratio >= a->isolve.lagged_flops_per_entry;
-  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, (double)a->isolve.lagged_flops_per_entry,
-                      icntl22 ? "; factors on disk" : "", preonly ? "" : "; the KSP is not the default's"));
+  const bool   on_disk  = icntl22 != 0;
+  const bool   lagged   = preonly && AutoTakesLagged(a->isolve, ratio, on_disk);
+  a->isolve.flops_per_entry = ratio;
+  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry%s %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, on_disk ? "_on_disk" : "",
+                      (double)(on_disk ? a->isolve.lagged_flops_per_entry_on_disk : a->isolve.lagged_flops_per_entry), on_disk ? (a->isolve.ew_default ? "; factors on disk" : "; factors on disk, without Eisenstat-Walker's tolerances") : "", preonly ? "" : "; the KSP is not the default's"));
   if (!lagged) {
     PetscCall(AssemblyDropDefaultEW(a)); // a direct solve has no Krylov tolerance to set
     PetscFunctionReturn(0);
@@ -330,7 +333,8 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   a->isolve.factorisations = 1;
   PetscInt N;
   PetscCall(MatGetSize(F, &N, nullptr));
-  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges, to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio, (double)a->isolve.lagged_flops_per_entry));
+  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry%s %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges, to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio,
+                        on_disk ? "_on_disk" : "", (double)(on_disk ? a->isolve.lagged_flops_per_entry_on_disk : a->isolve.lagged_flops_per_entry)));
   PetscFunctionReturn(0);
 }
 

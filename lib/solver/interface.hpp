@@ -16,7 +16,8 @@ namespace boltnet {
 // changes) or lagged (Krylov on J preconditioned by the factorisation of an earlier Jacobian, kept
 // in the PC and refactored when the Krylov solve takes more than refactor_its iterations or fails).
 // solve_auto: not chosen yet; MUMPS's first analysis of J decides (lagged where it estimates at
-// least lagged_flops_per_entry flops per entry of the factors, in core).
+// least lagged_flops_per_entry flops per entry of the factors in core, lagged_flops_per_entry_on_disk
+// with the factors on disk and Eisenstat-Walker's tolerances).
 struct InterfaceSolve {
   PetscBool lagged                 = PETSC_FALSE;
   PetscBool solve_auto             = PETSC_TRUE;
@@ -26,6 +27,8 @@ struct InterfaceSolve {
   PetscReal rtol_before_ew         = 1e-10;       // the KSP's own relative tolerance, given back when they are dropped
   PetscReal ew_rtol_max            = 0.5;         // their largest forcing term (PETSc's default 0.9: solver/stepper.cpp)
   PetscReal lagged_flops_per_entry = 1000;
+  PetscReal lagged_flops_per_entry_on_disk = 2500;
+  PetscReal flops_per_entry        = 0; // MUMPS's estimate at auto's choice (0: not made)
   PetscInt  refactor_its           = 25;
   PetscBool factors_valid          = PETSC_FALSE; // the PC's factors are of a Jacobian of this analysis
   // The direct solve's modified Newton (docs/solver.md, "Keeping the factorisation"): the Jacobian
@@ -52,6 +55,20 @@ struct InterfaceSolve {
   std::vector<PetscInt> subdomain_nodes;
   std::string           bddc_option; // the option boltnet put into the options database, if any (solver/stepper.cpp)
 };
+
+// -interface_solve auto's rule (docs/solver.md, "Which one the default takes"): lagged where MUMPS
+// estimates a factorisation dear against the triangular solves a lagged Newton iteration makes in
+// its place, its flops per entry of the factors (an entry is read once per solve). In core, from
+// lagged_flops_per_entry. On disk each solve reads the factors back from disk, which costs about
+// four times as many flops' worth per entry (the full junction: a factorisation 825 s, a solve 38
+// to 53 s, at 4,444 flops per entry; medium in core: 15.4 s against 0.57 s at 1,734), so it takes
+// the higher lagged_flops_per_entry_on_disk, and Eisenstat-Walker's tolerances: GMRES to 1e-10
+// makes 11 to 18 solves per Newton iteration (medium: 310 in 24), as dear on disk as refactoring.
+inline bool AutoTakesLagged(const InterfaceSolve &s, double flops_per_entry, bool on_disk)
+{
+  if (!on_disk) return flops_per_entry >= s.lagged_flops_per_entry;
+  return s.ew_default && flops_per_entry >= s.lagged_flops_per_entry_on_disk;
+}
 
 // Trusting "converged" (solver/equilibrium.cpp, docs/solver.md, "When is a step converged").
 struct ConvergenceChecks {

@@ -87,9 +87,9 @@ PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
 }
 
 // The direct solve's KSP again, for a lagged solve that the automatic choice made in core and whose
-// factors then had to go to disk (a factorisation that ran out of memory): on disk, every triangular
-// solve reads the factors back, and auto would have chosen direct (docs/solver.md, "Which one the
-// default takes"). SNES's lag of the preconditioner goes back to 1: refactor whenever J changes.
+// factors then had to go to disk (a factorisation that ran out of memory), where auto's rule for
+// factors on disk chooses direct (AutoTakesLagged; docs/solver.md, "Which one the default takes").
+// SNES's lag of the preconditioner goes back to 1: refactor whenever J changes.
 PetscErrorCode AssemblyUseDirectKSP(BoltnetAssembly a)
 {
   KSP ksp;
@@ -203,7 +203,8 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscInt    isolve    = a->isolve.solve_auto ? 0 : a->isolve.lagged ? 2 : 1;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
   PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations; to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
-  PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, and the factors stay in memory", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry, &a->isolve.lagged_flops_per_entry, nullptr));
+  PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, with the factors in memory", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry, &a->isolve.lagged_flops_per_entry, nullptr));
+  PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry_on_disk", "-interface_solve auto with the factors on disk (each triangular solve reads them back): the lagged solve when MUMPS estimates at least this many flops per entry of the factors and GMRES stops at Eisenstat-Walker's tolerances", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry_on_disk, &a->isolve.lagged_flops_per_entry_on_disk, nullptr));
   PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->isolve.out_of_core, &a->isolve.out_of_core, nullptr));
   PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->isolve.memory_mb, &a->isolve.memory_mb, nullptr));
   PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->isolve.refactor_its, &a->isolve.refactor_its, nullptr));
@@ -212,6 +213,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCheck(a->isolve.keep_ratio >= 0 && a->isolve.keep_ratio < 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_keep_ratio %g must be in [0, 1): the factor by which the residual must fall per iteration for the factorisation to be kept (0: never kept)", (double)a->isolve.keep_ratio);
   PetscCheck(a->isolve.refactor_its >= 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_refactor_its %" PetscInt_FMT " must be >= 1", a->isolve.refactor_its);
   PetscCheck(a->isolve.lagged_flops_per_entry > 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_lagged_flops_per_entry %g must be > 0", (double)a->isolve.lagged_flops_per_entry);
+  PetscCheck(a->isolve.lagged_flops_per_entry_on_disk > 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_lagged_flops_per_entry_on_disk %g must be > 0", (double)a->isolve.lagged_flops_per_entry_on_disk);
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->isolve.storage_given));
   if (a->isolve.storage_given) a->isolve.out_of_core = PETSC_FALSE;
   PetscCheck(a->isolve.memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->isolve.memory_mb);
@@ -614,8 +616,11 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
         PetscCall(AssemblyFactorError(a, fatal, advice, &memory));
         if (!fatal.empty() && memory && a->isolve.out_of_core && !a->isolve.factors_on_disk) {
           a->isolve.factors_on_disk = PETSC_TRUE;
-          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(), a->isolve.lagged_auto ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk" : ""));
-          if (a->isolve.lagged_auto) PetscCall(AssemblyUseDirectKSP(a));
+          // auto's lagged choice was made for factors in memory: made again for factors on disk.
+          const bool direct_again = a->isolve.lagged_auto && !AutoTakesLagged(a->isolve, a->isolve.flops_per_entry, true);
+          PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(),
+                                direct_again ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk below -interface_lagged_flops_per_entry_on_disk" : ""));
+          if (direct_again) PetscCall(AssemblyUseDirectKSP(a));
           PetscCall(AssemblyResetPC(a));
           a->isolve.factors_valid = PETSC_FALSE;
           PetscCall(AssemblySetUpNullPivots(a));
