@@ -59,11 +59,13 @@ struct InterfaceSolve {
 // -interface_solve auto's rule (docs/solver.md, "Which one the default takes"): lagged where MUMPS
 // estimates a factorisation dear against the triangular solves a lagged Newton iteration makes in
 // its place, its flops per entry of the factors (an entry is read once per solve). In core, from
-// lagged_flops_per_entry. On disk each solve reads the factors back from disk, which costs about
-// four times as many flops' worth per entry (the full junction: a factorisation 825 s, a solve 38
-// to 53 s, at 4,444 flops per entry; medium in core: 15.4 s against 0.57 s at 1,734), so it takes
-// the higher lagged_flops_per_entry_on_disk, and Eisenstat-Walker's tolerances: GMRES to 1e-10
-// makes 11 to 18 solves per Newton iteration (medium: 310 in 24), as dear on disk as refactoring.
+// lagged_flops_per_entry. On disk each solve reads the factors back from disk, which costs 4 to 9
+// times as many flops' worth per entry (the full junction at 4,480 flops per entry: a factorisation
+// 8 to 20 solves of 37 to 53 s; medium in core at 1,734: 27, 15.4 s against 0.57 s). With
+// Eisenstat-Walker's tolerances a lagged Newton iteration makes about 4 solves, a direct one about
+// 0.75 factorisations and a solve, so on disk the two break even near 2,300 flops per entry: the
+// threshold lagged_flops_per_entry_on_disk. Without them GMRES to 1e-10 makes 11 to 18 solves per
+// Newton iteration (medium: 310 in 24), as dear on disk as refactoring: direct.
 inline bool AutoTakesLagged(const InterfaceSolve &s, double flops_per_entry, bool on_disk)
 {
   if (!on_disk) return flops_per_entry >= s.lagged_flops_per_entry;

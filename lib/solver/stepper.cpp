@@ -619,7 +619,7 @@ PetscErrorCode SolveLoadPath(BoltnetAssembly a, PetscInt n, const PetscReal fact
           // auto's lagged choice was made for factors in memory: made again for factors on disk.
           const bool direct_again = a->isolve.lagged_auto && !AutoTakesLagged(a->isolve, a->isolve.flops_per_entry, true);
           PetscCall(PetscPrintf(a->comm, "boltnet: load step %zu: %s; factoring again with the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names; -interface_out_of_core false stops instead)%s\n", a->steps.size() + 1, fatal.c_str(),
-                                direct_again ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk below -interface_lagged_flops_per_entry_on_disk" : ""));
+                                direct_again ? "; the interface solve is direct again, as -interface_solve auto chooses with factors on disk (-interface_lagged_flops_per_entry_on_disk)" : ""));
           if (direct_again) PetscCall(AssemblyUseDirectKSP(a));
           PetscCall(AssemblyResetPC(a));
           a->isolve.factors_valid = PETSC_FALSE;
