@@ -159,20 +159,24 @@ boltnet_expect(chain_auto_user_ksp_direct 1 --match "steps converged" --reject "
   -interface_lagged_flops_per_entry 1 -ksp_type gmres)
 set_tests_properties(chain_auto_user_ksp_direct_np1 PROPERTIES FIXTURES_SETUP chain_auto_user_ksp)
 # With factors on disk auto needs a dearer factorisation (-interface_lagged_flops_per_entry_on_disk:
-# the full junction's 4,444 flops per entry against the default 2,500) and Eisenstat-Walker's
+# the full junction's 4,480 flops per entry against the default 2,500) and Eisenstat-Walker's
 # tolerances, which keep GMRES to a few solves per Newton iteration. Both at 1 flop per entry,
-# lap-rows goes lagged on disk, one factorisation, and keeps the closed-form load shares; with
-# -snes_ksp_ew false it stays direct.
-boltnet_expect(lap_rows_auto_on_disk_lagged 1 --match "the factors go to disk" --match "the interface solve is lagged" --match "steps converged"
-  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged
-  -output_fields false -patch_condense false -interface_lagged_flops_per_entry 1 -interface_lagged_flops_per_entry_on_disk 1 -interface_memory_mb 30)
-set_tests_properties(lap_rows_auto_on_disk_lagged_np1 PROPERTIES FIXTURES_SETUP lap_rows_auto_on_disk_lagged)
-add_test(NAME lap_rows_auto_on_disk_lagged_summary
-  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk'], s['ksp_ew'], s['lagged_factorisations'], s['factor_flops_per_entry']); sys.exit(0 if s['interface_solve'] == 'lagged' and s['factors_on_disk'] and s['ksp_ew'] and s['lagged_factorisations'] == 1 and s['factor_flops_per_entry'] > 1 else 1)"
-          ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged/summary.json)
-add_test(NAME lap_rows_auto_on_disk_lagged_load_shares
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged/joints.csv 21820 72000 20 1.27 20)
-set_tests_properties(lap_rows_auto_on_disk_lagged_summary lap_rows_auto_on_disk_lagged_load_shares PROPERTIES FIXTURES_REQUIRED lap_rows_auto_on_disk_lagged)
+# lap-rows goes lagged on disk, one factorisation, and keeps the closed-form load shares, on 1, 2
+# and 3 ranks; with -snes_ksp_ew false it stays direct.
+foreach(ranks 1 2 3)
+  set(out ${BOLTNET_OUT}/lap_rows_auto_on_disk_lagged_np${ranks})
+  boltnet_expect(lap_rows_auto_on_disk_lagged ${ranks} --match "the factors go to disk" --match "the interface solve is lagged" --match "steps converged"
+    -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${out}
+    -output_fields false -patch_condense false -interface_lagged_flops_per_entry 1 -interface_lagged_flops_per_entry_on_disk 1 -interface_memory_mb 30)
+  set_tests_properties(lap_rows_auto_on_disk_lagged_np${ranks} PROPERTIES FIXTURES_SETUP lap_rows_auto_on_disk_lagged_np${ranks})
+  add_test(NAME lap_rows_auto_on_disk_lagged_summary_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['interface_solve'], s['factors_on_disk'], s['ksp_ew'], s['lagged_factorisations'], s['factor_flops_per_entry']); sys.exit(0 if s['interface_solve'] == 'lagged' and s['factors_on_disk'] and s['ksp_ew'] and s['lagged_factorisations'] == 1 and s['factor_flops_per_entry'] > 1 else 1)"
+            ${out}/summary.json)
+  add_test(NAME lap_rows_auto_on_disk_lagged_load_shares_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_lap_rows.py ${out}/joints.csv 21820 72000 20 1.27 20)
+  set_tests_properties(lap_rows_auto_on_disk_lagged_summary_np${ranks} lap_rows_auto_on_disk_lagged_load_shares_np${ranks}
+    PROPERTIES FIXTURES_REQUIRED lap_rows_auto_on_disk_lagged_np${ranks})
+endforeach()
 boltnet_expect(lap_rows_auto_no_ew_on_disk_direct 1 --match "the factors go to disk" --match "steps converged" --reject "the interface solve is lagged"
   -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/lap-rows.yaml -output_dir ${BOLTNET_OUT}/lap_rows_auto_no_ew_on_disk
   -output_fields false -patch_condense false -interface_lagged_flops_per_entry 1 -interface_lagged_flops_per_entry_on_disk 1 -interface_memory_mb 30 -snes_ksp_ew false)
