@@ -2,10 +2,11 @@
 """Checks that a Nastran deck is read by rank 0 alone and that each shell part's mesh goes from
 rank 0 to the one rank that lays it out (lib/nastran/petsc.cpp, io/nastran.cpp, patch/share.cpp).
 
-  check_deck_per_rank.py DECK RANKS -- COMMAND...
+  check_deck_per_rank.py DECK RANKS INFO -- COMMAND...
 
-Runs COMMAND (an mpirun of the driver on DECK with -info) and reads each rank's lines (PETSc 3.18
-writes them as '[r] <sys> Function(): ...')
+Runs COMMAND (an mpirun of the driver on DECK with -info INFO, which writes each rank's lines to
+its own file INFO.r: info_files.py) and reads each rank's lines (PETSc 3.18 writes them as
+'[r] <sys> Function(): ...')
 
   [r] ReadDeckOn(): Read the Nastran deck 'DECK' on this rank alone
   [r] SendRank0Meshes(): Sent s shell part meshes (b bytes) to the ranks that lay them out
@@ -24,8 +25,9 @@ others received.
 """
 import os
 import re
-import subprocess
 import sys
+
+import info_files
 
 
 def shell_cards(path):
@@ -84,15 +86,14 @@ def deck_parts(path):
 
 
 def main():
-    if len(sys.argv) < 5 or sys.argv[3] != "--":
+    if len(sys.argv) < 6 or sys.argv[4] != "--":
         sys.exit(__doc__)
-    deck, ranks, command = sys.argv[1], int(sys.argv[2]), sys.argv[4:]
+    deck, ranks, info, command = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[5:]
     parts = deck_parts(deck)
     P, N = len(parts), sum(len(g) for g in parts.values())
-    run = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    out = run.stdout
-    if run.returncode != 0:
-        sys.exit(out[-20000:] + "\nthe run failed (exit code %d)" % run.returncode)
+    status, printed, out = info_files.run(command, info)
+    if status != 0:
+        sys.exit(printed[-20000:] + "\nthe run failed (exit code %d)" % status)
     readers = [int(r) for r in re.findall(r"^\[(\d+)\] (?:<\w+> )?ReadDeckOn\(\): Read the Nastran deck '.*' on this rank alone$", out, re.M)]
     laid = {}  # rank -> [(K, P, n, N)] in order of set-up
     for r, k, p, n, nn in re.findall(r"^\[(\d+)\] (?:<\w+> )?LayoutCreate\(\): Read and laid out (\d+) of (\d+) shell parts \((\d+) of (\d+) mesh nodes\) on this rank$", out, re.M):

@@ -7,9 +7,10 @@
 With "none": the run converged and no solve had an Eisenstat-Walker tolerance (summary.json's
 ksp_ew false, no line reported), as when -ksp_rtol or -snes_ksp_ew false is given.
 
-INFO_LOG is the run's output under -info :snes. PETSc's KSPPreSolve_SNESEW, the KSP pre-solve hook
-that SNESGetKSP installs, reports each tolerance it sets ("iter k, Eisenstat-Walker (version v)
-KSP rtol=r", rank 0's lines counted). The reference is PETSc's definition of the method
+INFO_LOG holds rank 0's lines under -info NAME:snes, which PETSc writes to NAME.0 (a file of
+its own, where no other rank's output can cut a line in two: info_files.py). PETSc's
+KSPPreSolve_SNESEW, the KSP pre-solve hook that SNESGetKSP installs, reports each tolerance it
+sets ("iter k, Eisenstat-Walker (version v) KSP rtol=r"). The reference is PETSc's definition of the method
 (SNESKSPSetParametersEW): the first solve of each SNESSolve uses rtol_0 (-snes_ksp_ew_rtol0, given
 here as RTOL0), and every tolerance lies in (0, rtol_max], RTOLMAX (PETSc's default 0.9 unless given). A KSP whose
 hooks were replaced without calling PETSc's would report nothing, and fail here.

@@ -2,9 +2,10 @@
 """Checks that each shell part is read and laid out by one rank only (lib/patch/layout.cpp), and
 that past the set-up each rank keeps the components of its own joints only (lib/network/build.cpp).
 
-  check_read_per_rank.py SCENE.yaml RANKS -- COMMAND...
+  check_read_per_rank.py SCENE.yaml RANKS INFO -- COMMAND...
 
-Runs COMMAND (an mpirun of the driver with -info) and reads each rank's lines
+Runs COMMAND (an mpirun of the driver with -info INFO, which writes each rank's lines to its own
+file INFO.r: info_files.py) and reads each rank's lines
 
   [r] LayoutCreate(): Read and laid out K of P shell parts (n of N mesh nodes) on this rank
   [r] ReleaseUnowned(): Kept the meshes of m of M shell patches (k nodes) on this rank past the set-up
@@ -27,8 +28,9 @@ side on a shell part) and S joints in all.
 import csv
 import os
 import re
-import subprocess
 import sys
+
+import info_files
 
 
 def gmsh_part_nodes(path, part):
@@ -102,19 +104,20 @@ def scene_joints(scene):
 
 
 def main():
-    scene, ranks = sys.argv[1], int(sys.argv[2])
-    cmd = sys.argv[sys.argv.index("--") + 1:]
-    out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if out.returncode != 0:
-        print(out.stdout[-3000:])
-        sys.exit(f"the run exited {out.returncode}")
+    if len(sys.argv) < 6 or sys.argv[4] != "--":
+        sys.exit(__doc__)
+    scene, ranks, info, cmd = sys.argv[1], int(sys.argv[2]), sys.argv[3], sys.argv[5:]
+    status, printed, out = info_files.run(cmd, info)
+    if status != 0:
+        print(printed[-3000:])
+        sys.exit(f"the run exited {status}")
     pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read and laid out (\d+) of (\d+) shell parts \((\d+) of (\d+) mesh nodes\)")
     kept_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Kept the components of (\d+) of (\d+) joints on this rank past the set-up")
     mesh_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Kept the meshes of (\d+) of (\d+) shell patches \((\d+) nodes\) on this rank past the set-up")
     table_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Read the fastener table's (\d+) rows on this rank")
     sent_pat = re.compile(r"^\[(\d+)\] (?:<\w+> )?\S+: Attaching (\d+) of (\d+) joints \((\d+) joint sides\) on this rank's shell parts")
     seen, kept, table, sent, meshes = {}, {}, {}, {}, {}
-    for line in out.stdout.splitlines():
+    for line in out.splitlines():
         g = pat.match(line)
         if g:
             seen[int(g.group(1))] = tuple(int(x) for x in g.groups()[1:])

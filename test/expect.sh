@@ -8,9 +8,15 @@
 # --unchanged FILE  FILE must be byte-for-byte the same after the command (nothing written is corrupted)
 # --max-lines N     its output must have at most N lines (an error is one line, not a traceback)
 # --absent PATH     PATH must not exist after the command (nothing was written)
+# --info PREFIX     the command writes PETSc's -info to one file per rank (-info PREFIX[:classes]
+#                   gives PREFIX.0, PREFIX.1, ...): they are removed before it runs and read with
+#                   its output after. On several ranks -info on stdout is not line-safe: mpirun
+#                   forwards each rank's block-buffered output as it comes, and a block of one rank
+#                   can cut a line of another in two.
 set -u
 max_lines=''
 absent=()
+info=''
 want_fail=0
 want_status=''
 matches=()
@@ -25,6 +31,7 @@ while [ $# -gt 0 ]; do
     --unchanged) keep+=("$2"); shift ;;
     --max-lines) max_lines=$2; shift ;;
     --absent) absent+=("$2"); shift ;;
+    --info) info=$2; shift ;;
     --) shift; break ;;
     *) echo "expect.sh: unknown argument $1" >&2; exit 2 ;;
   esac
@@ -32,8 +39,14 @@ while [ $# -gt 0 ]; do
 done
 sums=()
 for f in "${keep[@]+"${keep[@]}"}"; do sums+=("$(cksum < "$f")"); done
+[ -n "$info" ] && rm -f "$info".[0-9]*
 out=$("$@" 2>&1)
 status=$?
+r=0
+while [ -n "$info" ] && [ -f "$info.$r" ]; do
+  out+=$'\n'$(cat "$info.$r")
+  r=$((r + 1))
+done
 echo "$out"
 echo "[exit status $status]"
 ok=1

@@ -250,7 +250,7 @@ foreach(case "lagged_snes_ksp_ew;lagged_ksp_ew;-snes_ksp_ew -snes_ksp_ew_rtol0 0
   list(GET case 3 rtols)
   foreach(ranks 1 2 3)
     add_test(NAME ${name}_np${ranks}
-      COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged $7 -info :snes > \"$3.log\" && \"$5\" \"$6\" \"$3.log\" \"$3/summary.json\" $8"
+      COMMAND sh -c "rm -rf \"$3\" && \"$0\" -n $1 --oversubscribe \"$2\" -scene \"$4\" -output_dir \"$3\" -output_fields false -interface_solve lagged $7 -info \"$3.info:snes\" > \"$3.log\" && \"$5\" \"$6\" \"$3.info.0\" \"$3/summary.json\" $8"
               ${MPIEXEC_EXECUTABLE} ${ranks} $<TARGET_FILE:boltnet_driver> ${BOLTNET_OUT}/${dir}_np${ranks} ${BOLTNET_OUT}/grid/small.yaml ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_ksp_ew.py "${opts}" "${rtols}")
     set_tests_properties(${name}_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED grid_scene)
   endforeach()

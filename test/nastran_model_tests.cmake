@@ -211,8 +211,9 @@ endforeach()
 foreach(ranks 1 2 3)
   add_test(NAME nastran_deck_on_rank0_np${ranks}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${BOLTNET_OUT}/nastran-wingbox/wingbox-small.bdf ${ranks}
+            ${BOLTNET_OUT}/nastran_deck_on_rank0_np${ranks}.info
             -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe ${_drv} -nastran_deck ${BOLTNET_OUT}/nastran-wingbox/wingbox-small.bdf
-            -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_np${ranks} -load_max 1 -load_steps 1 -info)
+            -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_np${ranks} -load_max 1 -load_steps 1 -info ${BOLTNET_OUT}/nastran_deck_on_rank0_np${ranks}.info)
   set_tests_properties(nastran_deck_on_rank0_np${ranks} PROPERTIES PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox
     FIXTURES_SETUP nastran_deck_on_rank0_np${ranks})
 endforeach()
@@ -221,8 +222,9 @@ endforeach()
 foreach(fmt large free)
   add_test(NAME nastran_deck_on_rank0_${fmt}_np2
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${BOLTNET_OUT}/nastran-wingbox/wingbox-${fmt}.bdf 2
+            ${BOLTNET_OUT}/nastran_deck_on_rank0_${fmt}_np2.info
             -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${BOLTNET_OUT}/nastran-wingbox/wingbox-${fmt}.bdf
-            -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_${fmt}_np2 -load_max 1 -load_steps 1 -info)
+            -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_${fmt}_np2 -load_max 1 -load_steps 1 -info ${BOLTNET_OUT}/nastran_deck_on_rank0_${fmt}_np2.info)
   set_tests_properties(nastran_deck_on_rank0_${fmt}_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox)
 endforeach()
 foreach(sub 1 2)
@@ -241,8 +243,9 @@ add_test(NAME nastran_wingbox_medium_summary
 set_tests_properties(nastran_wingbox_medium_summary PROPERTIES FIXTURES_REQUIRED nastran_wingbox_medium ENVIRONMENT "${BOLTNET_ENV}")
 add_test(NAME nastran_deck_on_rank0_medium_np2
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_deck_per_rank.py ${_wbm}/wingbox-small.bdf 2
+          ${BOLTNET_OUT}/nastran_deck_on_rank0_medium_np2.info
           -- ${BOLTNET_MPIRUN} 2 --oversubscribe ${_drv} -nastran_deck ${_wbm}/wingbox-small.bdf
-          -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_medium_np2 -load_max 1 -load_steps 1 -info)
+          -output_dir ${BOLTNET_OUT}/nastran_deck_on_rank0_medium_np2 -load_max 1 -load_steps 1 -info ${BOLTNET_OUT}/nastran_deck_on_rank0_medium_np2.info)
 set_tests_properties(nastran_deck_on_rank0_medium_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED nastran_wingbox_medium)
 # A deck's joint type identified from its geometry with the shell correction measures the elements
 # around its first joint where the deck's meshes are, on rank 0 (io/scene.cpp, ShellCorrection): on

@@ -43,11 +43,12 @@ add_test(NAME predictor_fig3c_bt_closed_form_np1
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${out}/joints.csv 1.5e5 5000 4e4 0.05 3000)
 set_tests_properties(predictor_fig3c_bt_closed_form_np1 PROPERTIES DEPENDS predictor_fig3c_bt_np1)
 foreach(ranks 1 2 3)
+  set(info ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance_np${ranks}.info)
   boltnet_expect(predictor_fig3c_bt_no_allowance ${ranks} --match "36 steps converged \\(0 cut-backs\\)"
-    --match "step [0-9]+: the predicted iterate is at the round-off floor and in balance" --
+    --match "step [0-9]+: the predicted iterate is at the round-off floor and in balance" --info ${info} --
     ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_SCENES}/fig3c.yaml
     -output_dir ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance_np${ranks}
-    -load_steps 12 -load_max_cuts 0 -snes_linesearch_type bt -snes_max_fail 0 -info :snes)
+    -load_steps 12 -load_max_cuts 0 -snes_linesearch_type bt -snes_max_fail 0 -info ${info}:snes)
   add_test(NAME predictor_fig3c_bt_no_allowance_closed_form_np${ranks}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${BOLTNET_OUT}/predictor_fig3c_bt_no_allowance_np${ranks}/joints.csv 1.5e5 5000 4e4 0.05 3000)
   set_tests_properties(predictor_fig3c_bt_no_allowance_closed_form_np${ranks} PROPERTIES DEPENDS predictor_fig3c_bt_no_allowance_np${ranks})

@@ -103,8 +103,9 @@ set_tests_properties(wing_make_bad_radius_writes_nothing PROPERTIES FIXTURES_REQ
 # parts' nodes counted in the Gmsh files themselves (check_read_per_rank.py).
 foreach(ranks 2 3)
   add_test(NAME wing_tiny_read_per_rank_np${ranks}
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_read_per_rank.py ${_wf}/tiny.yaml ${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_read_per_rank.py ${_wf}/tiny.yaml ${ranks} ${BOLTNET_OUT}/wing_tiny_read_np${ranks}.info
             -- ${BOLTNET_MPIRUN} ${ranks} --oversubscribe $<TARGET_FILE:boltnet_driver> -scene ${_wf}/tiny.yaml
-               -output_dir ${BOLTNET_OUT}/wing_tiny_read_np${ranks} -load_table 1 -load_steps 1 -output_fields false -info)
+               -output_dir ${BOLTNET_OUT}/wing_tiny_read_np${ranks} -load_table 1 -load_steps 1 -output_fields false
+               -info ${BOLTNET_OUT}/wing_tiny_read_np${ranks}.info)
   set_tests_properties(wing_tiny_read_per_rank_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_tiny_scene PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}")
 endforeach()
