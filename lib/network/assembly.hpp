@@ -267,7 +267,7 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a);
 // A fresh preconditioner for the next solve, after a failed one or before another load case:
 // PCReset, or for BDDC a new one (solver/stepper.cpp). Call AssemblySetUpNullPivots after it.
 PetscErrorCode AssemblyResetPC(BoltnetAssembly a);
-// The lagged interface solve's Krylov method (GMRES, right preconditioned) on the SNES's KSP.
+// The lagged interface solve's Krylov method (flexible GMRES, right preconditioned) on the SNES's KSP.
 PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a);
 // Eisenstat-Walker's tolerances for the lagged solve unless -snes_ksp_ew or -ksp_rtol is given, and
 // their removal where the solve turns out direct (solver/stepper.cpp).

@@ -292,8 +292,8 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
 
 // -interface_solve auto, once per run, from MUMPS's analysis of the first Jacobian (docs/solver.md,
 // "The interface solve"). A lagged Newton iteration costs a few triangular solves with the factors
-// (GMRES at Eisenstat-Walker's tolerances: about four), a direct one a factorisation at most: the lagged solve pays where a factorisation
-// costs many solves. MUMPS's estimates say so before anything is factored: the factorisation's flops
+// (FGMRES at Eisenstat-Walker's tolerances: about three), a direct one a factorisation at most: the
+// lagged solve pays where a factorisation costs many solves. MUMPS's estimates say so before anything is factored: the factorisation's flops
 // (RINFOG(1)) per entry of the factors (INFOG(20)), an entry being read about once per solve; factors
 // on disk are read back from disk at every solve and need a dearer factorisation (AutoTakesLagged in
 // solver/interface.hpp). Another Krylov method or preconditioner than the default's is the user's
@@ -325,7 +325,7 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
     PetscCall(AssemblyDropDefaultEW(a)); // a direct solve has no Krylov tolerance to set
     PetscFunctionReturn(0);
   }
-  // This analysis's factorisation is the lagged solve's first: the KSP becomes GMRES at the next
+  // This analysis's factorisation is the lagged solve's first: the KSP becomes FGMRES at the next
   // Newton iteration (AssemblyFormJacobian), when no solve is under way.
   a->isolve.lagged        = PETSC_TRUE;
   a->isolve.lagged_auto   = PETSC_TRUE;

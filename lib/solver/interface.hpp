@@ -62,10 +62,14 @@ struct InterfaceSolve {
 // lagged_flops_per_entry. On disk each solve reads the factors back from disk, which costs 4 to 9
 // times as many flops' worth per entry (the full junction at 4,480 flops per entry: a factorisation
 // 8 to 20 solves of 37 to 53 s; medium in core at 1,734: 27, 15.4 s against 0.57 s). With
-// Eisenstat-Walker's tolerances a lagged Newton iteration makes about 4 solves, a direct one about
-// 0.75 factorisations and a solve, so on disk the two break even near 2,300 flops per entry: the
-// threshold lagged_flops_per_entry_on_disk. Without them GMRES to 1e-10 makes 11 to 18 solves per
-// Newton iteration (medium: 310 in 24), as dear on disk as refactoring: direct.
+// Eisenstat-Walker's tolerances a lagged Newton iteration makes about 3 solves with FGMRES (4 with
+// the right-preconditioned GMRES the threshold was set with), a direct one about 0.75
+// factorisations and a solve, so on disk the two break even near 1,600 flops per entry (2,300 with
+// GMRES) at the full junction's 8 solves a factorisation, lower where a factorisation costs more
+// solves (20: about 630). The threshold lagged_flops_per_entry_on_disk, 2,500, stays above both: on
+// disk auto goes lagged only where it wins by a margin. Without them a solve to 1e-10 makes 11 to
+// 18 solves per Newton iteration (medium: 310 in 24 with GMRES), as dear on disk as refactoring:
+// direct.
 inline bool AutoTakesLagged(const InterfaceSolve &s, double flops_per_entry, bool on_disk)
 {
   if (!on_disk) return flops_per_entry >= s.lagged_flops_per_entry;

@@ -21,11 +21,11 @@ PetscErrorCode ConvergedInBalance(SNES, PetscInt, PetscReal, PetscReal, PetscRea
 PetscErrorCode AtFloorInBalance(BoltnetAssembly, Vec, Vec, PetscReal, PetscBool *);
 }
 
-// Eisenstat-Walker's tolerances (SNESKSPSetUseEW) for the lagged solve's GMRES, unless the command
-// line gives -snes_ksp_ew or -ksp_rtol. Each GMRES iteration is a triangular solve with the factors,
+// Eisenstat-Walker's tolerances (SNESKSPSetUseEW) for the lagged solve's FGMRES, unless the command
+// line gives -snes_ksp_ew or -ksp_rtol. Each FGMRES iteration is a triangular solve with the factors,
 // and far from the solution a Newton step needs no solve to 1e-10: the forcing term follows the
 // residual's own decrease (docs/solver.md, "Inexact Newton"). Set from the first Newton iteration
-// on whenever the solve may be lagged, so that the forcing term of the first GMRES solve already
+// on whenever the solve may be lagged, so that the forcing term of the first FGMRES solve already
 // has the residual it follows; AssemblyDropDefaultEW takes it back where the solve is direct.
 PetscErrorCode AssemblyDefaultEW(BoltnetAssembly a)
 {
@@ -68,16 +68,23 @@ PetscErrorCode AssemblyDropDefaultEW(BoltnetAssembly a)
   PetscFunctionReturn(0);
 }
 
-// The lagged solve's Krylov method: GMRES, right preconditioned so that it watches the true
-// residual of J, to Eisenstat-Walker's tolerances by default (above), else to 1e-10 of it unless
-// -ksp_rtol says otherwise. Called at set-up, or by the automatic choice before the Newton
-// iteration after MUMPS's first analysis (a KSP's type cannot change inside its own solve).
+// The lagged solve's Krylov method: flexible GMRES (KSPFGMRES), right preconditioned as it must be,
+// so that it watches the true residual of J, to Eisenstat-Walker's tolerances by default (above),
+// else to 1e-10 of it unless -ksp_rtol says otherwise. Flexible, although the preconditioner (the
+// kept factors) does not change within a solve, because it keeps the preconditioned directions and
+// builds the solution from them: right-preconditioned GMRES keeps only the Krylov basis and
+// applies the preconditioner once more at the end of each solve (KSPGMRESBuildSoln), a triangular
+// solve that reads all the factors for no new direction. With about three iterations per solve
+// that extra solve is a quarter of them (the medium junction: 347 triangular solves with GMRES,
+// 264 with FGMRES, the same 83 solves and 264 iterations; docs/solver.md), for one more vector per
+// iteration. Called at set-up, or by the automatic choice before the Newton iteration after MUMPS's
+// first analysis (a KSP's type cannot change inside its own solve).
 PetscErrorCode AssemblyUseLaggedKSP(BoltnetAssembly a)
 {
   KSP ksp;
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(a->snes, &ksp));
-  PetscCall(KSPSetType(ksp, KSPGMRES));
+  PetscCall(KSPSetType(ksp, KSPFGMRES));
   PetscCall(KSPSetPCSide(ksp, PC_RIGHT));
   PetscCall(KSPGMRESSetRestart(ksp, 100));
   PetscCall(KSPSetTolerances(ksp, 1e-10, 0.0, PETSC_DEFAULT, 100));
@@ -202,12 +209,12 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   const char *isolves[] = {"auto", "direct", "lagged"};
   PetscInt    isolve    = a->isolve.solve_auto ? 0 : a->isolve.lagged ? 2 : 1;
   PetscOptionsBegin(a->comm, a->prefix.c_str(), "boltnet interface solve", "boltnet");
-  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when GMRES needs more than -interface_refactor_its iterations; to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry, with the factors on disk -interface_lagged_flops_per_entry_on_disk; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
+  PetscCall(PetscOptionsEList("-interface_solve", "The linear solve of each Newton iteration: direct (the Jacobian factored whenever it changes), lagged (flexible GMRES preconditioned by the factorisation of an earlier Jacobian, refactored when it needs more than -interface_refactor_its iterations; to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given) or auto (lagged where MUMPS's analysis of the first Jacobian estimates a factorisation dear against a triangular solve: -interface_lagged_flops_per_entry, with the factors on disk -interface_lagged_flops_per_entry_on_disk; else direct): docs/solver.md", "AssemblySetUpSolver", isolves, 3, isolves[isolve], &isolve, nullptr));
   PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry", "-interface_solve auto: the lagged solve when MUMPS's analysis estimates at least this many flops for the factorisation (RINFOG(1)) per entry of the factors (INFOG(20)), a triangular solve's cost, with the factors in memory", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry, &a->isolve.lagged_flops_per_entry, nullptr));
   PetscCall(PetscOptionsReal("-interface_lagged_flops_per_entry_on_disk", "-interface_solve auto with the factors on disk (each triangular solve reads them back): the lagged solve when MUMPS estimates at least this many flops per entry of the factors and GMRES stops at Eisenstat-Walker's tolerances", "AssemblySetUpSolver", a->isolve.lagged_flops_per_entry_on_disk, &a->isolve.lagged_flops_per_entry_on_disk, nullptr));
   PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->isolve.out_of_core, &a->isolve.out_of_core, nullptr));
   PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->isolve.memory_mb, &a->isolve.memory_mb, nullptr));
-  PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last GMRES solve took more than this many iterations or failed", "AssemblySetUpSolver", a->isolve.refactor_its, &a->isolve.refactor_its, nullptr));
+  PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last Krylov solve took more than this many iterations or failed", "AssemblySetUpSolver", a->isolve.refactor_its, &a->isolve.refactor_its, nullptr));
   PetscCall(PetscOptionsReal("-interface_keep_ratio", "Direct interface solve: keep the Jacobian and its factorisation from an earlier Newton iterate while the residual falls by at least this factor per iteration and no joint changes state (modified Newton; 0: refactor at every iteration): docs/solver.md", "AssemblySetUpSolver", a->isolve.keep_ratio, &a->isolve.keep_ratio, nullptr));
   PetscOptionsEnd();
   PetscCheck(a->isolve.keep_ratio >= 0 && a->isolve.keep_ratio < 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_keep_ratio %g must be in [0, 1): the factor by which the residual must fall per iteration for the factorisation to be kept (0: never kept)", (double)a->isolve.keep_ratio);
