@@ -333,7 +333,7 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   a->isolve.factorisations = 1;
   PetscInt N;
   PetscCall(MatGetSize(F, &N, nullptr));
-  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry%s %g): the interface solve is lagged, GMRES preconditioned by a factorisation kept while it converges, to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio,
+  PetscCall(PetscPrintf(a->comm, "boltnet: MUMPS's analysis estimates the %" PetscInt_FMT "-dof Jacobian's factorisation at %.0f flops per entry of its factors (-interface_lagged_flops_per_entry%s %g): the interface solve is lagged, FGMRES preconditioned by a factorisation kept while it converges, to Eisenstat-Walker's tolerances unless -snes_ksp_ew or -ksp_rtol is given (-interface_solve direct factors every Jacobian; docs/solver.md)\n", N, ratio,
                         on_disk ? "_on_disk" : "", (double)(on_disk ? a->isolve.lagged_flops_per_entry_on_disk : a->isolve.lagged_flops_per_entry)));
   PetscFunctionReturn(0);
 }
