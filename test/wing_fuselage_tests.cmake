@@ -79,7 +79,41 @@ foreach(skin aluminium cfrp)
   add_test(NAME wing_small_beam_${skin}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_beam.py ${BOLTNET_OUT}/wing_small_moment_${skin}_np1 ${_wf}/small-moment-${skin}.yaml)
   set_tests_properties(wing_small_beam_${skin} PROPERTIES FIXTURES_REQUIRED "wing_small_moment_${skin}_scene;wing_small_moment_${skin}_np1")
+  # Under the pure moment each skin splice's rows share the load as the spring chain of
+  # docs/lap-rows.md says, in the middle half of the chord (check_junction_chain.py).
+  add_test(NAME wing_small_chain_${skin}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_chain.py ${BOLTNET_OUT}/wing_small_moment_${skin}_np1 ${_wf}/small-moment-${skin}.yaml)
+  set_tests_properties(wing_small_chain_${skin} PROPERTIES FIXTURES_REQUIRED "wing_small_moment_${skin}_scene;wing_small_moment_${skin}_np1")
 endforeach()
+
+# The small size, the scene as generated (friction, clearances, bearing), along its load path (1 g,
+# 2.5 g, -1 g, 0; one step per segment) on 1 and 2 ranks with the global factorisation: each outer
+# box balanced by its side-of-body fasteners at every step (check_junction_equilibrium.py) and the
+# same joints on 2 ranks; the default solve (patches condensed where they have few ports for their
+# size) gives the global factorisation's joints. Then every fastener a linear spring
+# (small.linear.opts), the default solve on 1 rank against the global factorisation on 2, an
+# independent linear solve of the same mesh.
+add_test(NAME wing_make_small COMMAND ${_wfgen} ${_wf} small --size small --load-steps 1)
+set_tests_properties(wing_make_small PROPERTIES FIXTURES_SETUP wing_small_scene)
+foreach(ranks 1 2)
+  boltnet_run(wing_small ${ranks} ${_wf}/small.yaml ${_exact})
+  set_tests_properties(run_wing_small_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_small_scene)
+  add_test(NAME wing_small_equilibrium_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_small_np${ranks} ${_wf}/small.yaml 1e-6)
+  set_tests_properties(wing_small_equilibrium_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_small_scene;wing_small_np${ranks}")
+endforeach()
+boltnet_compare_ranks(wing_small 1e-8 2)
+boltnet_run(wing_small_default 2 ${_wf}/small.yaml -output_fields false)
+set_tests_properties(run_wing_small_default_np2 PROPERTIES FIXTURES_REQUIRED wing_small_scene)
+add_test(NAME wing_small_default_vs_global
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_small_np1/joints.csv ${BOLTNET_OUT}/wing_small_default_np2/joints.csv 1e-8)
+set_tests_properties(wing_small_default_vs_global PROPERTIES FIXTURES_REQUIRED "wing_small_np1;wing_small_default_np2")
+boltnet_run(wing_small_linear 1 ${_wf}/small.yaml -options_file ${_wf}/small.linear.opts -output_fields false)
+boltnet_run(wing_small_linear_global 2 ${_wf}/small.yaml -options_file ${_wf}/small.linear.opts ${_exact} -output_fields false)
+set_tests_properties(run_wing_small_linear_np1 run_wing_small_linear_global_np2 PROPERTIES FIXTURES_REQUIRED wing_small_scene)
+add_test(NAME wing_small_linear_vs_global
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_small_linear_np1/joints.csv ${BOLTNET_OUT}/wing_small_linear_global_np2/joints.csv 1e-8)
+set_tests_properties(wing_small_linear_vs_global PROPERTIES FIXTURES_REQUIRED "wing_small_linear_np1;wing_small_linear_global_np2")
 
 # Bad parameters stop the generator with a message naming them, and nothing is run.
 boltnet_expect(wing_make_bad_gap 1 --fail --match "--butt-gap 5.* is too small for the tee's stem"
