@@ -292,8 +292,6 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
   PetscOptionsBegin(comm, nullptr, "boltnet driver", "boltnet");
   PetscCall(PetscOptionsString("-scene", "Scene file (PETSc YAML options), or the name of a scene that comes with boltnet (fig3c: share/boltnet/scenes/fig3c.yaml of the installation, docs/install.md)", "", file, file, sizeof(file), &hasScene));
   PetscCall(PetscOptionsString("-output_dir", "Directory for joints.csv or joints.h5, summary.json and the fields (default results/<scene name>; a load case: its folder <case> in it; a Nastran deck's subcase N: <output_dir>/subcase-N)", "", outdir, outdir, sizeof(outdir), nullptr));
-  PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &o.fields));
-  PetscCall(JointOutputOptionsFromCommandLine(PetscOptionsObject, &o.joints));
   PetscCall(PetscOptionsInt("-checkpoint_every", "Write a checkpoint (the committed state, for -restart) after every N converged load steps (0: none)", "", o.every, &o.every, nullptr));
   PetscCall(PetscOptionsString("-checkpoint_file", "The checkpoint file (default <output_dir>/checkpoint.h5), replaced whole at every checkpoint", "", ckfile, ckfile, sizeof(ckfile), nullptr));
   PetscCall(PetscOptionsString("-restart", "Go on from this checkpoint: same scene and options (those that change results), results continued in -output_dir", "", restart, restart, sizeof(restart), nullptr));
@@ -306,6 +304,12 @@ PetscErrorCode Run(int *exitcode, ErrorLog *log)
     PetscCall(FindScene(comm, file, &found));
     PetscCall(SceneInsertOptionsFile(comm, found.c_str(), &scene));
   }
+  // The output's options after the scene's, so that a scene's output: section sets them (the
+  // junction's generator gives its bypass strip width there) and the command line still wins.
+  PetscOptionsBegin(comm, nullptr, "boltnet output", "boltnet");
+  PetscCall(FieldsOptionsFromCommandLine(PetscOptionsObject, &o.fields));
+  PetscCall(JointOutputOptionsFromCommandLine(PetscOptionsObject, &o.joints));
+  PetscOptionsEnd();
   // A Nastran deck (docs/nastran.md, "From a deck to a model"): on the command line or in the
   // scene's nastran: section.
   PetscOptionsBegin(comm, nullptr, "Nastran deck as the model", "boltnet");

@@ -19,6 +19,9 @@ NAME.model.json), and writes into OUT_DIR:
   |w|, mm: zero or less when the bolt bears);
 - junction.png: one picture of the run (the upper outer splice and the lap along their rows, the
   skin splices' states at the highest level, the hysteresis);
+- bypass.png: along each row of the skin splices at the highest level, the load each fastener
+  takes out of the skin and the bypass load that passes its hole in the skin's strip (bypass.csv,
+  else fields.h5; the strip is the scene's -output_bypass_width, the splices' pitch along a row);
 - hysteresis.png: the joint's overall deflection over the load cycle: the rotation across the
   side-of-body joint (from the skins' spanwise displacements on either side of the splices,
   fields.h5) against the load factor, with the linear model.
@@ -71,6 +74,37 @@ def read_run(res):
     for r in rows:
         steps.setdefault(int(r["step"]), {})[int(r["joint"])] = r
     return steps, json.load(open(os.path.join(res, "summary.json")))
+
+
+def bypass_rows(res):
+    """{step: {joint: {sheet: (bearing, bypass load)}}} from bypass.csv, else from fields.h5 (a model
+    large enough for joints.h5 has them there alone: docs/output.md, "Bypass"); None if neither."""
+    path = os.path.join(res, "bypass.csv")
+    out = {}
+    if os.path.exists(path):
+        for r in csv.DictReader(open(path)):
+            out.setdefault(int(r["step"]), {}).setdefault(int(r["joint"]), {})[r["sheet"]] = (float(r["bearing"]), float(r["bypass_load"]))
+        return out
+    path = os.path.join(res, "fields.h5")
+    if not os.path.exists(path):
+        return None
+    with h5py.File(path, "r") as f:
+        ids = f["joints/id"][()].ravel()
+        for g in f["steps"].values():
+            if "joints" not in g or "bypass_load" not in g["joints"]:
+                continue
+            load, bearing = g["joints/bypass_load"][()], g["joints/bypass_bearing"][()]
+            out[int(g.attrs["step"])] = {int(j): {"a": (bearing[k, 0], load[k, 0]), "b": (bearing[k, 1], load[k, 1])} for k, j in enumerate(ids)}
+    return out or None
+
+
+def bypass_width(res, step):
+    """The strip width of the bypass loads (bypass.csv's column, fields.h5's attribute)."""
+    path = os.path.join(res, "bypass.csv")
+    if os.path.exists(path):
+        return float(next(csv.DictReader(open(path)))["width"])
+    with h5py.File(os.path.join(res, "fields.h5"), "r") as f:
+        return float(f[f"steps/{step:06d}/joints"].attrs["bypass_width"])
 
 
 def force(r):
@@ -334,6 +368,39 @@ def main():
     fig.tight_layout()
     fig.savefig(os.path.join(a.out, "hysteresis.png"), dpi=110)
     plt.close(fig)
+    # Bypass beside each fastener: the skin's load that passes the hole against the load the
+    # fastener takes out of it, along each row of the skin splices, at the highest level.
+    byp = bypass_rows(a.results)
+    lv_top = max(at, key=abs)
+    s_top = at[lv_top]
+    if byp is None or s_top not in byp:
+        print(f"plot-junction.py: no bypass loads in {a.results} (bypass.csv or fields.h5): bypass.png not written")
+    else:
+        fig, axes = plt.subplots(1, len(skin), figsize=(3.4 * len(skin), 3.4), squeeze=False)
+        drawn = 0
+        for ax, sp in zip(axes[0], skin):
+            js = [j for j, m in right.items() if m["splice"] == sp]
+            for k, row in enumerate(sorted({int(right[j]["row"]) for j in js})):
+                jr = sorted((j for j in js if int(right[j]["row"]) == row), key=lambda j: float(right[j]["position"]))
+                side = lambda j: "a" if right[j]["part_a"].startswith(("outer_", "centre_")) else "b"
+                vals = [byp[s_top].get(j, {}).get(side(j), (float("nan"), float("nan"))) for j in jr]
+                pos = [float(right[j]["position"]) for j in jr]
+                c = plt.rcParams["axes.prop_cycle"].by_key()["color"][k % 10]
+                ax.plot(pos, [abs(v[0]) / 1000 for v in vals], "-", marker="o", ms=3, lw=1, color=c, label=f"row {row}: fastener")
+                ax.plot(pos, [abs(v[1]) / 1000 for v in vals], "--", marker="s", ms=3, lw=1, color=c, label=f"row {row}: bypass")
+                drawn += sum(1 for v in vals if math.isfinite(v[1]))
+            ax.set_title(sp.replace("_", " "), fontsize=9)
+            ax.set_xlabel("x along the chord (mm)", fontsize=8)
+            ax.set_ylabel("load in the skin's strip (kN)", fontsize=8)
+            ax.tick_params(labelsize=7)
+            ax.legend(fontsize=6)
+        fig.suptitle(f"{summary['scene']} at {lv_top:g} g: each fastener's load on the skin (solid) and the bypass load beside it "
+                     f"(dashed; strip {bypass_width(a.results, s_top):g} mm)", fontsize=9)
+        fig.tight_layout(rect=(0, 0, 1, 0.93))
+        fig.savefig(os.path.join(a.out, "bypass.png"), dpi=110)
+        plt.close(fig)
+        if not drawn:
+            print("plot-junction.py: every bypass load is NaN (the strip, -output_bypass_width, holds no element outside the footprints)")
     summary_figure(a, base, model, steps, summary, right, at, lin, lcol, table)
     print(f"plot-junction.py: charts of {summary['scene']} at {', '.join(f'{lv:g} g' for lv in at)} in {a.out}/")
     return 0

@@ -22,6 +22,18 @@ foreach(ranks 1 2)
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_np${ranks} ${_wf}/tiny.yaml 1e-6)
   set_tests_properties(wing_tiny_equilibrium_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np${ranks}")
 endforeach()
+# The bypass strip's width comes from the scene's output: section (the skin splices' pitch along a
+# row), read after the scene's options, and the command line still wins (check_junction_bypass.py).
+add_test(NAME wing_tiny_bypass_width
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_bypass.py ${BOLTNET_OUT}/wing_tiny_np1 ${_wf}/tiny.yaml)
+set_tests_properties(wing_tiny_bypass_width PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np1")
+boltnet_expect(wing_tiny_bypass_width_given 1 --match "steps converged" --
+  $<TARGET_FILE:boltnet_driver> -scene ${_wf}/tiny.yaml -output_dir ${BOLTNET_OUT}/wing_tiny_bypass_given
+  -load_table 1 -load_steps 1 -output_bypass_width 150)
+set_tests_properties(wing_tiny_bypass_width_given_np1 PROPERTIES FIXTURES_REQUIRED wing_tiny_scene FIXTURES_SETUP wing_tiny_bypass_given)
+add_test(NAME wing_tiny_bypass_width_given_check
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_bypass.py ${BOLTNET_OUT}/wing_tiny_bypass_given ${_wf}/tiny.yaml 150)
+set_tests_properties(wing_tiny_bypass_width_given_check PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_bypass_given")
 # Results do not depend on the number of ranks (standards).
 boltnet_compare_ranks(wing_tiny 1e-8 2)
 boltnet_run(wing_tiny_condensed 2 ${_wf}/tiny.yaml)

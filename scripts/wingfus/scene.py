@@ -81,6 +81,14 @@ def thickness_key(material):
     return material
 
 
+def bypass_width(fasteners):
+    """The pitch along a row of the upper outer skin splice: the width of the strip that each of its
+    fasteners takes the bypass load of (the default, 6 coupling radii, is narrower than the
+    footprint's one element here, and its strip would hold no element outside the footprint)."""
+    pos = sorted(j.pos for j in fasteners if j.splice == "upper_outer" and j.row == 1 and j.side == fasteners[0].side)
+    return min(b - a for a, b in zip(pos, pos[1:]))
+
+
 def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
     os.makedirs(out, exist_ok=True)
     base = os.path.join(out, name)
@@ -118,5 +126,7 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
                 f"  reach: {_num(a.coupling_reach)}    # along the bolt: beyond the distance from a fastener to its sheets' mid-surfaces\n")
         f.write(f"load:\n  path: table\n  table: {','.join(_num(v) for v in a.load_table)}   # load factors (g); forces in the bcs table are the 1 g loads\n"
                 f"  steps: {a.load_steps}\n")
+        f.write(f"output:\n  bypass_width: {_num(bypass_width(fasteners))}   # the skin splices' pitch along a row: each fastener's "
+                f"bypass load is its strip's (docs/output.md, \"Bypass\")\n")
     with open(base + ".model.json", "w") as f:
         json.dump({k: v for k, v in model.items() if k != "yaml_header"}, f, indent=1)
