@@ -9,7 +9,7 @@ apply to it must balance the loads applied at its tip, at every converged step o
 
 F_tip, M_tip: the resultant of the tip's node-set forces about the side-of-body point O, computed by
 the generator from the node positions (NAME.model.json); lambda the load factor. F_j = the joint's
-force on the box's side in global axes, from joints.csv (force f on node B in the joint frame n, t1,
+force on the box's side in global axes, from joints.csv or joints.h5 (force f on node B in the joint frame n, t1,
 t2: the joint pulls node A with +f and node B with -f); M_j = kr (theta_B - theta_A), the rotational
 spring's moment, with each node's rotation read in fields.h5 at its footprint (exact coupling: every
 footprint node turns with the joint node) and kr from summary.json (identified types) or the scene
@@ -32,6 +32,20 @@ import sys
 
 import h5py
 import numpy as np
+
+
+def joint_rows(res):
+    """joints.csv's rows, or the same fields from the joint table joints.h5 that a model of 10,000
+    joints or more writes instead (docs/output.md, "The joint table")."""
+    path = os.path.join(res, "joints.csv")
+    if os.path.exists(path):
+        yield from csv.DictReader(open(path))
+        return
+    with h5py.File(os.path.join(res, "joints.h5"), "r") as f:
+        step, load, ids, force = f["step"][()], f["load"][()], f["joint"][()], f["force"][()]
+    for s in range(len(step)):
+        for k, j in enumerate(ids):
+            yield {"step": step[s], "load": load[s], "joint": j, "f_n": force[s, k, 0], "f_t1": force[s, k, 1], "f_t2": force[s, k, 2]}
 
 
 def main():
@@ -73,7 +87,7 @@ def main():
         frames[j] = (n, t1, np.cross(n, t1), x)
         nodes[j] = (footprint_node(int(r["patch_a"]), x), footprint_node(int(r["patch_b"]), x))
     steps = {}
-    for r in csv.DictReader(open(os.path.join(res, "joints.csv"))):
+    for r in joint_rows(res):
         steps.setdefault(int(r["step"]), []).append(r)
     worst = 0.0
     for wing in model["wings"]:

@@ -34,6 +34,13 @@ set_tests_properties(wing_tiny_bypass_width_given_np1 PROPERTIES FIXTURES_REQUIR
 add_test(NAME wing_tiny_bypass_width_given_check
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_bypass.py ${BOLTNET_OUT}/wing_tiny_bypass_given ${_wf}/tiny.yaml 150)
 set_tests_properties(wing_tiny_bypass_width_given_check PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_bypass_given")
+# The joint table joints.h5 in place of joints.csv (as from 10,000 joints): the equilibrium check
+# reads it the same way, 2 ranks.
+boltnet_run(wing_tiny_h5 2 ${_wf}/tiny.yaml ${_exact} -output_joints hdf5)
+set_tests_properties(run_wing_tiny_h5_np2 PROPERTIES FIXTURES_REQUIRED wing_tiny_scene)
+add_test(NAME wing_tiny_h5_equilibrium
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_h5_np2 ${_wf}/tiny.yaml 1e-6)
+set_tests_properties(wing_tiny_h5_equilibrium PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_h5_np2")
 # Results do not depend on the number of ranks (standards).
 boltnet_compare_ranks(wing_tiny 1e-8 2)
 boltnet_run(wing_tiny_condensed 2 ${_wf}/tiny.yaml)
