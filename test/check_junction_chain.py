@@ -28,30 +28,20 @@ import csv
 import json
 import sys
 
+import numpy as np
+
 
 def chain_shares(n, kf, s, EA_skin, EA_plate):
     """F_1..F_n for P = 1, row 1 where the skin ends."""
-    A = [[0.0] * n for _ in range(n)]
-    b = [0.0] * n
+    A, b = np.zeros((n, n)), np.zeros(n)
     for i in range(n - 1):  # (F_{i+1} - F_i)/kf - s (S_i/EA_skin - (1 - S_i)/EA_plate) = 0
-        A[i][i + 1] += 1 / kf
-        A[i][i] -= 1 / kf
-        for j in range(i + 1):
-            A[i][j] -= s * (1 / EA_skin + 1 / EA_plate)
+        A[i, i + 1] += 1 / kf
+        A[i, i] -= 1 / kf
+        A[i, :i + 1] -= s * (1 / EA_skin + 1 / EA_plate)
         b[i] = -s / EA_plate
-    A[n - 1] = [1.0] * n
+    A[n - 1, :] = 1.0
     b[n - 1] = 1.0
-    for c in range(n):  # Gaussian elimination with partial pivoting
-        piv = max(range(c, n), key=lambda r: abs(A[r][c]))
-        A[c], A[piv], b[c], b[piv] = A[piv], A[c], b[piv], b[c]
-        for r in range(c + 1, n):
-            f = A[r][c] / A[c][c]
-            A[r] = [x - f * y for x, y in zip(A[r], A[c])]
-            b[r] -= f * b[c]
-    x = [0.0] * n
-    for r in reversed(range(n)):
-        x[r] = (b[r] - sum(A[r][k] * x[k] for k in range(r + 1, n))) / A[r][r]
-    return x
+    return list(np.linalg.solve(A, b))
 
 
 def main():
