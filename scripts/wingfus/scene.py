@@ -86,7 +86,8 @@ def bypass_width(fasteners):
     fasteners takes the bypass load of (the default, 6 coupling radii, is narrower than the
     footprint's one element here, and its strip would hold no element outside the footprint)."""
     pos = sorted(j.pos for j in fasteners if j.splice == "upper_outer" and j.row == 1 and j.side == fasteners[0].side)
-    return min(b - a for a, b in zip(pos, pos[1:]))
+    gaps = [b - a for a, b in zip(pos, pos[1:])]
+    return min(gaps) if gaps else 0.0  # one fastener a row: no pitch, the driver's default (0)
 
 
 def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
