@@ -41,6 +41,11 @@ set_tests_properties(run_wing_tiny_h5_np2 PROPERTIES FIXTURES_REQUIRED wing_tiny
 add_test(NAME wing_tiny_h5_equilibrium
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_h5_np2 ${_wf}/tiny.yaml 1e-6)
 set_tests_properties(wing_tiny_h5_equilibrium PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_h5_np2")
+# With joints.h5 there is no bypass.csv: the bypass chart reads fields.h5, and its loads are numbers.
+add_test(NAME wing_tiny_plot_h5
+  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1\" \"$2\" -o \"$3\" > \"$3.log\" 2>&1; s=$?; cat \"$3.log\"; test $s = 0 && test ! -e \"$1/bypass.csv\" && test -s \"$3/bypass.png\" && ! grep -q 'bypass' \"$3.log\""
+          ${PROJECT_SOURCE_DIR}/scripts/plot-junction.py ${BOLTNET_OUT}/wing_tiny_h5_np2 ${_wf}/tiny.yaml ${BOLTNET_OUT}/wing_tiny_charts_h5)
+set_tests_properties(wing_tiny_plot_h5 PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_h5_np2")
 # Results do not depend on the number of ranks (standards).
 boltnet_compare_ranks(wing_tiny 1e-8 2)
 boltnet_run(wing_tiny_condensed 2 ${_wf}/tiny.yaml)
@@ -61,7 +66,7 @@ add_test(NAME wing_tiny_springs_vs_identify
 set_tests_properties(wing_tiny_springs_vs_identify PROPERTIES FIXTURES_REQUIRED wing_tiny_scene)
 # The load-transfer charts read the run and the metadata.
 add_test(NAME wing_tiny_plot
-  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1\" \"$2\" -o \"$3\" --compare \"$4\" && test -s \"$3/load-transfer.png\" && test -s \"$3/hysteresis.png\""
+  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1\" \"$2\" -o \"$3\" --compare \"$4\" && test -s \"$3/load-transfer.png\" && test -s \"$3/hysteresis.png\" && test -s \"$3/bypass.png\""
           ${PROJECT_SOURCE_DIR}/scripts/plot-junction.py ${BOLTNET_OUT}/wing_tiny_np1 ${_wf}/tiny.yaml ${BOLTNET_OUT}/wing_tiny_charts
           ${BOLTNET_OUT}/wing_tiny_linear_np1)
 set_tests_properties(wing_tiny_plot PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np1;wing_tiny_linear_np1")

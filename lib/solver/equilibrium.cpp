@@ -293,8 +293,9 @@ static PetscErrorCode ChooseFactorStorage(BoltnetAssembly a, Mat F)
 // -interface_solve auto, once per run, from MUMPS's analysis of the first Jacobian (docs/solver.md,
 // "The interface solve"). A lagged Newton iteration costs a few triangular solves with the factors
 // (FGMRES at Eisenstat-Walker's tolerances: about three), a direct one a factorisation at most: the
-// lagged solve pays where a factorisation costs many solves. MUMPS's estimates say so before anything is factored: the factorisation's flops
-// (RINFOG(1)) per entry of the factors (INFOG(20)), an entry being read about once per solve; factors
+// lagged solve pays where a factorisation costs many solves. MUMPS's estimates say so before
+// anything is factored: the factorisation's flops (RINFOG(1)) per entry of the factors
+// (INFOG(20)), an entry being read about once per solve; factors
 // on disk are read back from disk at every solve and need a dearer factorisation (AutoTakesLagged in
 // solver/interface.hpp). Another Krylov method or preconditioner than the default's is the user's
 // own choice: it stays direct. The estimates are global, so every rank decides alike, and they
