@@ -61,6 +61,7 @@ ShellPatch SamplePatch()
   p.drill = 0.03;
   p.shared.push_back({SampleGeometry(4, 1), {0, -1, 2, 3}, 17, {5, 6, 7, 8}});
   p.shared.push_back({SampleGeometry(3, 2), {-1, 1, 4, -1}, 18, {9, 10, 11, -1}});
+  p.shared_in_set = {{"skin", {0, 1}}, {"xmin", {1}}};
   p.joint_nodes.push_back({{1, 2, 3}, {0, 0, 1}, {0, 1, 2}});
   p.joint_nodes.push_back({{4, 5, 6}, {0, 1, 0}, {}});
   p.part_set_size = {{"", 100}, {"xmin", 11}};
@@ -115,6 +116,7 @@ int main()
   Expect(q.shared.size() == p.shared.size(), "shared elements");
   for (size_t i = 0; i < p.shared.size() && i < q.shared.size(); ++i)
     Expect(SameGeometry(q.shared[i].geom, p.shared[i].geom) && q.shared[i].node == p.shared[i].node && q.shared[i].elem == p.shared[i].elem && q.shared[i].part_node == p.shared[i].part_node, "a shared element");
+  Expect(q.shared_in_set == p.shared_in_set, "shared elements within node sets");
   Expect(q.joint_nodes.size() == p.joint_nodes.size(), "joint nodes");
   for (size_t i = 0; i < p.joint_nodes.size() && i < q.joint_nodes.size(); ++i)
     Expect(q.joint_nodes[i].x == p.joint_nodes[i].x && q.joint_nodes[i].axis == p.joint_nodes[i].axis && q.joint_nodes[i].footprint == p.joint_nodes[i].footprint, "a joint node");

@@ -48,7 +48,11 @@ typedef enum {
   BOLTNET_STATE_STICK   = 3,
   BOLTNET_STATE_SLIDE   = 4
 } BoltnetJointState;
-typedef enum { BOLTNET_BC_FIXED = 0, BOLTNET_BC_DISPLACEMENT = 1, BOLTNET_BC_FORCE = 2 } BoltnetBCKind;
+/* BOLTNET_BC_PRESSURE: a pressure (force per unit area, per unit load factor) on the elements of a
+   shell patch, positive along each element's normal (right-handed about its node order), applied
+   as consistent nodal forces; dof must be -1. On a node set it loads the elements whose nodes all
+   lie in the set. */
+typedef enum { BOLTNET_BC_FIXED = 0, BOLTNET_BC_DISPLACEMENT = 1, BOLTNET_BC_FORCE = 2, BOLTNET_BC_PRESSURE = 3 } BoltnetBCKind;
 
 /* Macroelement parameters (see docs/joint-laws.md). kt is the in-plane stiffness: the spring's,
    the contact law's k before contact, the frictional law's stick stiffness ke. kc is k' (contact law)
@@ -85,7 +89,8 @@ PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatch(BoltnetAssembly, PetscI
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddShellPatchElements(BoltnetAssembly, PetscInt id, PetscInt nnodes, const PetscReal xyz[], PetscInt nelems, const PetscInt elems[], PetscReal E, PetscReal nu, PetscReal t);
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddNodeSet(BoltnetAssembly, PetscInt patch, const char name[], PetscInt n, const PetscInt nodes[]);
 /* A boundary condition on a node set of a shell patch (NULL or "": all its nodes); a force value is
-   the total on the set, shared equally by its nodes. */
+   the total on the set, shared equally by its nodes; a pressure loads the elements whose nodes all
+   lie in the set (NULL or "": every element of the patch). */
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddBCOnSet(BoltnetAssembly, PetscInt patch, const char set[], PetscInt dof, BoltnetBCKind, PetscReal value);
 /* A joint with a position (needed where it joins a shell patch). */
 PETSC_EXTERN PetscErrorCode BoltnetAssemblyAddJointAt(BoltnetAssembly, PetscInt id, PetscInt patch_a, PetscInt patch_b, const BoltnetJointParams *, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3]);

@@ -107,7 +107,7 @@ std::string SetUpKey(const std::vector<BCDesc> &bcs)
 {
   std::set<std::string> held;
   for (const BCDesc &b : bcs)
-    if (b.kind != BOLTNET_BC_FORCE) held.insert(std::to_string(b.patch) + "/" + b.set + "/" + std::to_string(b.dof));
+    if (b.kind != BOLTNET_BC_FORCE && b.kind != BOLTNET_BC_PRESSURE) held.insert(std::to_string(b.patch) + "/" + b.set + "/" + std::to_string(b.dof));
   std::string key;
   for (const std::string &h : held) key += h + ";";
   return key;

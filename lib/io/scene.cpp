@@ -435,7 +435,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
   PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,elements,mesh,part,material] (kind rigid, plate or gmsh; elements quad, tri or mixed)", "", fp, fp, sizeof(fp), nullptr));
   PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z] (n bolt axis, t1 first in-plane direction, x position)", "", fj, fj, sizeof(fj), nullptr));
-  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set,load] (dof ux..rz or all; kind fixed, displacement or force; value per unit load factor, mm or N; set: a shell patch's node set; load: the load it belongs to, for -load_cases)", "", fb, fb, sizeof(fb), nullptr));
+  PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set,load] (dof ux..rz or all; kind fixed, displacement, force or pressure; value per unit load factor, mm, N or MPa; set: a shell patch's node set (a pressure loads the elements within it); load: the load it belongs to, for -load_cases)", "", fb, fb, sizeof(fb), nullptr));
   PetscOptionsEnd();
   scene->name = name;
   scene->bc_loads.clear();
@@ -561,7 +561,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   if (rank == 0) PetscCall(PetscInfo(nullptr, "Read the fastener table's %zu rows on this rank\n", rows.size()));
   std::vector<FastenerRow>().swap(rows);
   const std::map<std::string, PetscInt> dofs = {{"ux", 0}, {"uy", 1}, {"uz", 2}, {"rx", 3}, {"ry", 4}, {"rz", 5}, {"all", -1}};
-  const std::map<std::string, BoltnetBCKind> kinds = {{"fixed", BOLTNET_BC_FIXED}, {"displacement", BOLTNET_BC_DISPLACEMENT}, {"force", BOLTNET_BC_FORCE}};
+  const std::map<std::string, BoltnetBCKind> kinds = {{"fixed", BOLTNET_BC_FIXED}, {"displacement", BOLTNET_BC_DISPLACEMENT}, {"force", BOLTNET_BC_FORCE}, {"pressure", BOLTNET_BC_PRESSURE}};
   for (size_t r = 0; r < bcs.rows.size(); ++r) {
     PetscInt    patch;
     PetscReal   value;
@@ -571,8 +571,9 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
     PetscCall(Cell(comm, bcs, r, "kind", &kind));
     PetscCall(RealCell(comm, bcs, r, "value", &value));
     PetscCheck(dofs.count(dof), comm, PETSC_ERR_USER_INPUT, "%s line %d: dof '%s' is not one of ux uy uz rx ry rz all", bcs.path.c_str(), bcs.lines[r], dof.c_str());
-    PetscCheck(kinds.count(kind), comm, PETSC_ERR_USER_INPUT, "%s line %d: kind '%s' is not one of fixed displacement force", bcs.path.c_str(), bcs.lines[r], kind.c_str());
+    PetscCheck(kinds.count(kind), comm, PETSC_ERR_USER_INPUT, "%s line %d: kind '%s' is not one of fixed displacement force pressure", bcs.path.c_str(), bcs.lines[r], kind.c_str());
     PetscCheck(!(kind == "force" && dof == "all"), comm, PETSC_ERR_USER_INPUT, "%s line %d: a force needs one dof, not 'all'", bcs.path.c_str(), bcs.lines[r]);
+    PetscCheck(!(kind == "pressure" && dof != "all"), comm, PETSC_ERR_USER_INPUT, "%s line %d: a pressure acts along the elements' normals: its dof is 'all', not '%s'", bcs.path.c_str(), bcs.lines[r], dof.c_str());
     std::string set, load;
     if (HasColumn(bcs, "set")) PetscCall(Cell(comm, bcs, r, "set", &set));
     if (HasColumn(bcs, "load")) PetscCall(Cell(comm, bcs, r, "load", &load));

@@ -6,6 +6,15 @@
 
 namespace boltnet {
 
+bool HasElementIn(const ShellMesh &m, const std::string &set)
+{
+  auto it = m.node_sets.find(set);
+  if (it == m.node_sets.end()) return false;
+  std::vector<char> in(m.x.size(), 0);
+  for (int v : it->second) in[v] = 1;
+  return std::any_of(m.elems.begin(), m.elems.end(), [&](const MeshElement &e) { return std::all_of(e.begin(), e.begin() + ElementNodes(e), [&](int v) { return in[v]; }); });
+}
+
 ShellMesh RectanglePlate(double x0, double y0, double lx, double ly, int nx, int ny, double z, PlateElements kind)
 {
   if (nx < 1 || ny < 1) throw std::invalid_argument("a plate needs at least one element in each direction");

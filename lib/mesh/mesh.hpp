@@ -26,6 +26,10 @@ struct ShellMesh {
   std::vector<std::array<double, 3>> directors;
 };
 
+// Whether some element of m has all its nodes in its node set `set` (what a pressure on the set
+// loads: patch/loads.hpp); false for a set m does not have.
+bool HasElementIn(const ShellMesh &m, const std::string &set);
+
 // How a generated plate is meshed: quadrilaterals; each quadrilateral split into two triangles
 // along a diagonal that alternates like a checkerboard, so that the mesh is symmetric about the
 // plate's centre lines when nx and ny are even; or mixed, quadrilaterals and triangle pairs in a

@@ -129,10 +129,13 @@ PetscErrorCode AddBC(BoltnetAssembly a, const char *where, PetscInt patch, const
   PetscCall(CheckNotSetUp(a, where));
   PetscCall(CheckId(a, where, 2, "patch", patch));
   PetscCheck(dof >= -1 && dof < 6, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": dof %" PetscInt_FMT " is not in 0..5 (ux uy uz rx ry rz) or -1 (all)", patch, dof);
-  PetscCheck(kind >= BOLTNET_BC_FIXED && kind <= BOLTNET_BC_FORCE, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": unknown kind %d", patch, (int)kind);
+  PetscCheck(kind >= BOLTNET_BC_FIXED && kind <= BOLTNET_BC_PRESSURE, a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": unknown kind %d", patch, (int)kind);
   PetscCheck(std::isfinite(value), a->comm, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": value is not finite", patch);
+  PetscCheck(kind != BOLTNET_BC_PRESSURE || dof == -1, a->comm, PETSC_ERR_USER_INPUT, "Pressure on patch %" PetscInt_FMT ": a pressure acts along the elements' normals, so its dof is -1 (all), not %" PetscInt_FMT, patch, dof);
   PetscCall(Guard(where, [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
+    // A patch not (yet) described is reported where the model is laid out (patch/layout.cpp).
+    PetscCheck(kind != BOLTNET_BC_PRESSURE || a->model.Find(patch) < 0 || a->model.shells.count(a->model.Find(patch)), a->comm, PETSC_ERR_USER_INPUT, "Pressure on patch %" PetscInt_FMT ": it is not a shell patch (a pressure loads a shell patch's elements)", patch);
     if (set && set[0]) {
       const PetscInt   pos = a->model.Find(patch);
       const ShellPart *sp  = a->model.shells.count(pos) ? &a->model.shells.at(pos) : nullptr;

@@ -51,6 +51,14 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     sub.part_node.push_back(v);
     nodemap[v] = {first + cut.patch[v], local[v]};
   }
+  // The node sets each part node is in (as many entries as the sets have members, however many sets).
+  std::vector<const std::string *>        set_name;
+  std::vector<std::vector<int>>           sets_of(n);
+  for (const auto &[name, members] : part.mesh.node_sets) {
+    for (int v : members) sets_of[v].push_back((int)set_name.size());
+    set_name.push_back(&name);
+  }
+  for (std::vector<int> &l : sets_of) l.erase(std::unique(l.begin(), l.end()), l.end()); // a node listed twice in a set
   std::map<std::pair<int, int>, Seam> seams;
   for (int e = 0; e < (int)part.mesh.elems.size(); ++e) {
     const MeshElement &q  = part.mesh.elems[e];
@@ -67,9 +75,13 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     // The geometry and directors of the whole part: a shared element is the same element in every
     // patch and seam that adds a share of it.
     const ElementGeometry geom = GeometryOf(part.mesh, q);
+    std::vector<const std::string *> within; // the node sets holding every node of the element
+    for (int set : sets_of[q[0]])
+      if (std::all_of(q.begin() + 1, q.begin() + nn, [&](int v) { return std::count(sets_of[v].begin(), sets_of[v].end(), set) > 0; })) within.push_back(set_name[set]);
     for (int s : in) {
       ShellPatch::SharedElement el{geom, {-1, -1, -1, -1}, e, q};
       for (int k = 0; k < nn; ++k) el.node[k] = cut.patch[q[k]] == s ? local[q[k]] : -1;
+      for (const std::string *name : within) subs[s].shared_in_set[*name].push_back((int)subs[s].shared.size());
       subs[s].shared.push_back(el);
     }
     for (int s : in)

@@ -47,7 +47,7 @@ PetscErrorCode CheckModel(MPI_Comm comm, const Model &m)
   for (const JointDesc &j : m.joints) group[root(index[j.part_a])] = root(index[j.part_b]);
   std::vector<char> supported(npart, 0);
   for (const BCDesc &bc : m.bcs)
-    if (bc.kind != BOLTNET_BC_FORCE) supported[root(index[bc.patch])] = 1;
+    if (bc.kind != BOLTNET_BC_FORCE && bc.kind != BOLTNET_BC_PRESSURE) supported[root(index[bc.patch])] = 1;
   std::string free;
   for (PetscInt i = 0; i < npart; ++i)
     if (!supported[root(i)]) free += (free.empty() ? "" : ", ") + std::to_string(m.parts[i].id);
@@ -90,7 +90,11 @@ PetscErrorCode LayoutCreate(MPI_Comm comm, Model &m, const LayoutOptions &o, Lay
       }
       if (sp.read) PetscCall(sp.read(&sp.mesh));
       PetscCheck(!sp.mesh.elems.empty(), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Shell patch %" PetscInt_FMT ": a mesh needs at least one element", p.id);
-      for (const BCDesc &bc : m.bcs) PetscCheck(bc.patch != p.id || bc.set.empty() || sp.mesh.node_sets.count(bc.set), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", p.id, bc.set.c_str());
+      for (const BCDesc &bc : m.bcs) {
+        if (bc.patch != p.id || bc.set.empty()) continue;
+        PetscCheck(sp.mesh.node_sets.count(bc.set), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Boundary condition on patch %" PetscInt_FMT ": it has no node set '%s'", p.id, bc.set.c_str());
+        PetscCheck(bc.kind != BOLTNET_BC_PRESSURE || HasElementIn(sp.mesh, bc.set), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "Pressure on patch %" PetscInt_FMT ", node set '%s': no element has all its nodes in the set, so the pressure would load nothing (a pressure loads the elements within a node set: name a surface's nodes, not a curve's)", p.id, bc.set.c_str());
+      }
       meshnodes[pos] = (std::int64_t)sp.mesh.x.size();
       p.mesh         = std::move(sp.mesh);
       parts[pos]     = std::move(p);

@@ -1,6 +1,45 @@
 #include "patch/loads.hpp"
 
+#include <algorithm>
+
 namespace boltnet {
+
+namespace {
+// The consistent nodal forces of pressure p on the patch's elements in node set `set` ("": all)
+// added to force: its whole elements with every node in the set, and its share (the rows of its own
+// nodes) of the shared elements the cut found inside the set (ShellPatch::shared_in_set). Each
+// element's share is added by the patches that hold its nodes, so the part's total is the integral
+// of p n over the elements whatever the cut.
+void AddPressure(const ShellPatch &sp, const std::string &set, double p, std::map<PetscInt, double> &force)
+{
+  std::vector<char> in(sp.mesh.x.size(), set.empty());
+  if (!set.empty())
+    if (auto it = sp.mesh.node_sets.find(set); it != sp.mesh.node_sets.end())
+      for (int v : it->second) in[v] = 1;
+  double F[24];
+  for (const MeshElement &e : sp.mesh.elems) {
+    const int n = ElementNodes(e);
+    if (!std::all_of(e.begin(), e.begin() + n, [&](int v) { return in[v]; })) continue;
+    const ElementGeometry g = GeometryOf(sp.mesh, e);
+    shell::ElementPressure(n, g.X.data(), p, F);
+    for (int k = 0; k < n; ++k)
+      for (int d = 0; d < 3; ++d) force[6 * e[k] + d] += F[6 * k + d];
+  }
+  std::vector<int> shared;
+  if (set.empty()) {
+    shared.resize(sp.shared.size());
+    for (size_t s = 0; s < shared.size(); ++s) shared[s] = (int)s;
+  } else if (auto it = sp.shared_in_set.find(set); it != sp.shared_in_set.end())
+    shared = it->second;
+  for (int s : shared) {
+    const ShellPatch::SharedElement &el = sp.shared[s];
+    shell::ElementPressure(el.geom.n, el.geom.X.data(), p, F);
+    for (int k = 0; k < el.geom.n; ++k)
+      if (el.node[k] >= 0)
+        for (int d = 0; d < 3; ++d) force[6 * el.node[k] + d] += F[6 * k + d];
+  }
+}
+} // namespace
 
 PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt part_id, const ShellPatch *sp, PatchLoads *loads)
 {
@@ -11,6 +50,11 @@ PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt p
   for (size_t b = 0; b < model.bcs.size(); ++b) {
     const BCDesc &bc = model.bcs[b];
     if (bc.patch != part_id) continue;
+    if (bc.kind == BOLTNET_BC_PRESSURE) {
+      PetscCheck(sp, comm, PETSC_ERR_USER_INPUT, "Pressure on patch %" PetscInt_FMT ": it is not a shell patch", part_id);
+      AddPressure(*sp, bc.set, bc.value, loads->force);
+      continue;
+    }
     // The nodes in this patch: a rigid patch's node; a shell patch's share of the named set, or all
     // its mesh nodes. A force is the set's total over the whole part.
     std::vector<int> nodes = {0};

@@ -75,6 +75,7 @@ template <class A, class S> void PatchFields(A &a, S &p)
     Field(b, s.elem);
     Field(b, s.part_node);
   });
+  Field(a, p.shared_in_set);
   Elements(a, p.joint_nodes, [](A &b, auto &jn) {
     Field(b, jn.x);
     Field(b, jn.axis);

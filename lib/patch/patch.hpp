@@ -50,6 +50,10 @@ struct ShellPatch {
     std::array<int, 4> part_node{}; // its nodes' numbers in the part
   };
   std::vector<SharedElement> shared;
+  // For each node set of the part, the shared elements (positions in `shared`) whose nodes all lie
+  // in it: what a pressure on the set loads (patch/loads.hpp). The patch cannot tell alone, since
+  // some of their nodes are in other patches; the cut, which has the whole part, records it.
+  std::map<std::string, std::vector<int>> shared_in_set;
   // Joint nodes: node mesh.x.size() + k is the k-th joint attached to this patch.
   struct JointNode {
     std::array<double, 3> x, axis;
