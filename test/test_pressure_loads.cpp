@@ -2,9 +2,11 @@
 // moment against the closed forms p A n and p A n x c (A the loaded area, c its centroid), on
 // quadrilaterals, triangles and a mix, flat and tilted, on the whole part and on a node set; and
 // the same nodal forces, node by node, once the part is cut into patches (the elements on the cuts
-// are shared by several patches, each adding the rows of its own nodes).
+// are shared by several patches, each adding the rows of its own nodes); with exact coupling, the
+// share of a footprint moved to its joint node with the same resultant and moment.
 #include "patch/layout_steps.hpp"
 #include "patch/loads.hpp"
+#include "mesh/mesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -70,7 +72,7 @@ TEST_P(PressureLoads, ResultantAndMomentAreClosedForm)
     const ShellPatch whole = Plate(c.kind, c.angle);
     const Model      m     = PressureOn(set);
     PatchLoads       loads;
-    ASSERT_EQ(PatchLoadsFromModel(PETSC_COMM_SELF, m, kPart, &whole, &loads), 0);
+    ASSERT_EQ(PatchLoadsFromModel(PETSC_COMM_SELF, m, kPart, &whole, CouplingType::Node, &loads), 0);
     std::vector<double> f(6 * whole.mesh.x.size(), 0.0);
     AddByPartNode(whole, loads, f);
     const double lx = set.empty() ? kLx : kLeft;
@@ -100,7 +102,7 @@ TEST_P(PressureLoads, ResultantAndMomentAreClosedForm)
     std::vector<double> g(f.size(), 0.0);
     for (const auto &[pos, sp] : L.shells) {
       PatchLoads pl;
-      ASSERT_EQ(PatchLoadsFromModel(PETSC_COMM_SELF, m, kPart, &sp, &pl), 0);
+      ASSERT_EQ(PatchLoadsFromModel(PETSC_COMM_SELF, m, kPart, &sp, CouplingType::Node, &pl), 0);
       AddByPartNode(sp, pl, g);
       shared += sp.shared.size();
     }
@@ -112,6 +114,43 @@ TEST_P(PressureLoads, ResultantAndMomentAreClosedForm)
 INSTANTIATE_TEST_SUITE_P(Elements, PressureLoads,
                          ::testing::Values(Case{PlateElements::Quads, 0}, Case{PlateElements::Triangles, 0}, Case{PlateElements::Mixed, 0}, Case{PlateElements::Quads, 0.7},
                                            Case{PlateElements::Mixed, -2.1}));
+
+// With exact coupling the footprint nodes are slaves of their joint node: the pressure's forces on
+// them go to the joint node, with the same resultant and moment (p A n and its moment about the
+// origin, the joint node's position the lever of what it receives); no footprint row keeps a load.
+TEST(PressureLoads, FootprintShareGoesToTheJointNode)
+{
+  ShellPatch        p = Plate(PlateElements::Mixed, 0.7);
+  const Vec3        at = Turn({52, 31, 0}, 0.7), axis = Turn({0, 0, 1}, 0.7);
+  const std::vector<int> fp = CouplingFootprint(p.mesh, at, axis, 12);
+  ASSERT_GE(fp.size(), 4u);
+  p.joint_nodes.push_back({at, axis, fp});
+  const Model m = PressureOn("");
+  PatchLoads  loads;
+  ASSERT_EQ(PatchLoadsFromModel(PETSC_COMM_SELF, m, kPart, &p, CouplingType::Exact, &loads), 0);
+  const PetscInt nmesh = (PetscInt)p.mesh.x.size();
+  Vec3           F{}, M{};
+  for (const auto &[dof, f] : loads.force) {
+    const PetscInt node = dof / 6, i = dof % 6;
+    for (int v : fp) EXPECT_NE(node, v) << "a footprint node keeps a load";
+    const Vec3 &x = node < nmesh ? p.mesh.x[node] : p.joint_nodes[node - nmesh].x;
+    if (i < 3) {
+      F[i] += f;
+      Vec3 e{}, xf;
+      e[i] = f;
+      xf   = {x[1] * e[2] - x[2] * e[1], x[2] * e[0] - x[0] * e[2], x[0] * e[1] - x[1] * e[0]};
+      for (int k = 0; k < 3; ++k) M[k] += xf[k];
+    } else M[i - 3] += f;
+  }
+  EXPECT_TRUE(loads.force.count(6 * nmesh + 2) || loads.force.count(6 * nmesh + 1)) << "the joint node receives the footprint's share";
+  const double A = kLx * kLy;
+  const Vec3   n = Turn({0, 0, 1}, 0.7), c = Turn({kLx / 2, kLy / 2, 0}, 0.7);
+  const Vec3   Mref{kP * A * (c[1] * n[2] - c[2] * n[1]), kP * A * (c[2] * n[0] - c[0] * n[2]), kP * A * (c[0] * n[1] - c[1] * n[0])};
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(F[k], kP * A * n[k], 1e-12 * kP * A) << "force component " << k;
+    EXPECT_NEAR(M[k], Mref[k], 1e-12 * kP * A * kLx) << "moment component " << k;
+  }
+}
 
 // A node set of a curve holds no element: the pressure on it loads nothing, and the layout refuses
 // it (HasElementIn).

@@ -167,3 +167,25 @@ foreach(ranks 2 3)
                -info ${BOLTNET_OUT}/wing_tiny_read_np${ranks}.info)
   set_tests_properties(wing_tiny_read_per_rank_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_tiny_scene PROCESSORS ${ranks} ENVIRONMENT "${BOLTNET_ENV}")
 endforeach()
+
+# Cabin pressure (--cabin-pressure, docs/wing-fuselage.md): the pressure on the fuselage skin is its
+# own load, and the scene runs three load cases on one set-up: the wing's path (flight), the pressure
+# alone (cabin) and both at 1 g (cruise). On 2 ranks: each outer box, which the pressure does not
+# load, is held by the side-of-body fasteners alone: they balance its tip load in flight and cruise,
+# and balance each other in cabin; flight is the scene without pressure (1 rank's tiny run, 1e-8).
+add_test(NAME wing_make_tiny_cabin COMMAND ${_wfgen} ${_wf} tinyp --size tiny --load-steps 2 --cabin-pressure 0.0576)
+set_tests_properties(wing_make_tiny_cabin PROPERTIES FIXTURES_SETUP wing_tiny_cabin_scene)
+boltnet_run(wing_tiny_cabin 2 ${_wf}/tinyp.yaml ${_exact})
+set_tests_properties(run_wing_tiny_cabin_np2 PROPERTIES FIXTURES_REQUIRED wing_tiny_cabin_scene)
+foreach(case flight cruise cabin)
+  set(_tip "")
+  if(case STREQUAL cabin)
+    set(_tip --no-tip-load)
+  endif()
+  add_test(NAME wing_tiny_cabin_${case}_equilibrium
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_cabin_np2/${case} ${_wf}/tinyp.yaml 1e-6 ${_tip})
+  set_tests_properties(wing_tiny_cabin_${case}_equilibrium PROPERTIES FIXTURES_REQUIRED "wing_tiny_cabin_scene;wing_tiny_cabin_np2")
+endforeach()
+add_test(NAME wing_tiny_cabin_flight_as_without
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_tiny_np1/joints.csv ${BOLTNET_OUT}/wing_tiny_cabin_np2/flight/joints.csv 1e-8)
+set_tests_properties(wing_tiny_cabin_flight_as_without PROPERTIES FIXTURES_REQUIRED "wing_tiny_np1;wing_tiny_cabin_np2")

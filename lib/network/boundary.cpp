@@ -19,7 +19,7 @@ PetscErrorCode AssemblySetUpBoundary(BoltnetAssembly a)
     for (const OwnedPatch &op : a->patches.owned) {
       const ShellPatch *sp = op.shell ? &a->layout.shells.at(op.index) : nullptr;
       PatchLoads        loads;
-      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, a->layout.patches[op.index].id, sp, &loads));
+      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, a->layout.patches[op.index].id, sp, a->opt.coupling_type, &loads));
       for (const auto &kv : loads.force) f2 += kv.second * kv.second;
       // The row of a patch dof, or -1 when a condensed patch keeps it inside (an interior dof).
       auto row = [&](PetscInt dof) -> PetscInt {

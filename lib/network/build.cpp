@@ -134,7 +134,7 @@ PetscErrorCode BuildOperators(BoltnetAssembly a)
         continue;
       }
       PatchLoads loads;
-      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, &loads));
+      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, a->opt.coupling_type, &loads));
       PetscCall(CondensePatch(sp, a->opt.coupling_type, penalty, a->opt.coupling_radius, loads, &op.cond));
       a->patches.condensed_bytes += op.cond.bytes;
     }

@@ -58,7 +58,7 @@ PetscErrorCode AssemblySetLoads(BoltnetAssembly a, const std::vector<BCDesc> &bc
       const ShellPatch &sp = a->layout.shells.at(op.index);
       if (!sp.condensed) continue;
       PatchLoads        loads;
-      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, &loads));
+      PetscCall(PatchLoadsFromModel(PETSC_COMM_SELF, a->model, sp.id, &sp, a->opt.coupling_type, &loads));
       PetscCall(CondensedPatchLoads(sp.id, loads, &op.cond));
     }
     PetscFunctionReturn(0);

@@ -88,9 +88,10 @@ PetscErrorCode AttachJoints(MPI_Comm comm, Model &m, const LayoutOptions &o, std
       }
       sp.joint_nodes[k].footprint = kept[k];
     }
-    // A footprint node follows its joint node: it cannot also carry a boundary condition.
+    // A footprint node follows its joint node: it cannot also carry a boundary condition. A
+    // pressure can: its share on the footprint goes to the joint node (patch/loads.hpp).
     for (const BCDesc &bc : m.bcs) {
-      if (bc.patch != sp.id) continue;
+      if (bc.patch != sp.id || bc.kind == BOLTNET_BC_PRESSURE) continue;
       for (int nd : BCNodes(bc, sp.mesh)) {
         auto it = taken.find(nd);
         if (it == taken.end()) continue;

@@ -39,9 +39,28 @@ void AddPressure(const ShellPatch &sp, const std::string &set, double p, std::ma
         for (int d = 0; d < 3; ++d) force[6 * el.node[k] + d] += F[6 * k + d];
   }
 }
+
+// The forces on footprint nodes, which exact coupling makes slaves of their joint node (u_s = T u_m,
+// patch.hpp: ExactSlaves), moved to the joint node as T^T f_s: the same virtual work for every
+// motion the coupling allows, and the slave rows, which hold the constraint, free of load.
+void MoveToJointNodes(const ShellPatch &sp, std::map<PetscInt, double> &force)
+{
+  const SlaveMap s = ExactSlaves(sp);
+  std::map<PetscInt, double> moved;
+  for (auto it = force.begin(); it != force.end();) {
+    const PetscInt node = it->first / 6, i = it->first % 6;
+    if (node >= (PetscInt)s.master.size() || s.master[node] < 0) {
+      ++it;
+      continue;
+    }
+    for (int j = 0; j < 6; ++j) moved[6 * s.master[node] + j] += s.T[node][6 * i + j] * it->second;
+    it = force.erase(it);
+  }
+  for (const auto &[dof, v] : moved) force[dof] += v;
+}
 } // namespace
 
-PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt part_id, const ShellPatch *sp, PatchLoads *loads)
+PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt part_id, const ShellPatch *sp, CouplingType coupling, PatchLoads *loads)
 {
   PetscFunctionBeginUser;
   loads->prescribed.clear();
@@ -52,7 +71,10 @@ PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt p
     if (bc.patch != part_id) continue;
     if (bc.kind == BOLTNET_BC_PRESSURE) {
       PetscCheck(sp, comm, PETSC_ERR_USER_INPUT, "Pressure on patch %" PetscInt_FMT ": it is not a shell patch", part_id);
-      AddPressure(*sp, bc.set, bc.value, loads->force);
+      std::map<PetscInt, double> f;
+      AddPressure(*sp, bc.set, bc.value, f);
+      if (coupling == CouplingType::Exact) MoveToJointNodes(*sp, f);
+      for (const auto &[dof, v] : f) loads->force[dof] += v;
       continue;
     }
     // The nodes in this patch: a rigid patch's node; a shell patch's share of the named set, or all

@@ -19,7 +19,9 @@ struct PatchLoads {
 // The conditions of model.bcs on the patch of part `part_id` (sp: its shell patch, or null for a
 // rigid patch). A later condition on a dof overrides an earlier prescribed value; forces on a dof
 // add up. A force on a dof that is also fixed or prescribed is an error naming both conditions
-// (the force would be absorbed by the support and the run would look converged).
-PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt part_id, const ShellPatch *sp, PatchLoads *loads);
+// (the force would be absorbed by the support and the run would look converged). A pressure
+// (BOLTNET_BC_PRESSURE) adds the consistent nodal forces of the elements it loads; with exact
+// coupling, those on footprint nodes go to their joint node (the footprint moves rigidly with it).
+PetscErrorCode PatchLoadsFromModel(MPI_Comm comm, const Model &model, PetscInt part_id, const ShellPatch *sp, CouplingType coupling, PatchLoads *loads);
 
 } // namespace boltnet

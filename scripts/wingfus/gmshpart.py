@@ -9,7 +9,9 @@ quadrangles only, with the node positions of the grids (grids.py), so that the f
 the same grids fall at element centres.
 
 The part is written as a Gmsh MSH 4.1 ASCII file holding one physical surface (the part, named like
-the file) and physical curves (node sets for boundary conditions); boltnet reads one part per file.
+the file), physical curves (node sets for boundary conditions) and, where a part has them, physical
+surfaces of some of its blocks (the fuselage's skin: a node set for the cabin pressure); boltnet
+reads one part per file.
 """
 import numpy as np
 
@@ -30,6 +32,7 @@ class Part:
         self.curves = {}   # (pa, pb, centre key) -> (tag, n)
         self.curve_pts = {}  # tag -> (start, mid, end) coordinates
         self.surfaces = []
+        self.groups = {}   # name -> (surface tags, outward(p) -> the direction its elements must face, or None)
         self.nblocks = 0
 
     def point(self, p):
@@ -65,9 +68,11 @@ class Part:
         self.curve_pts[tag] = (np.asarray(p, float), mid, np.asarray(q, float))
         return tag
 
-    def block(self, f, useg, vseg, u_centre=None, v_centre=None, planar=True):
+    def block(self, f, useg, vseg, u_centre=None, v_centre=None, planar=True, group=None, outward=None):
         """Block (u0, u1, nu) x (v0, v1, nv) of the map f(u, v) -> xyz. u_centre(v): centre of the
-        arcs along u (None: lines); v_centre(u) likewise along v."""
+        arcs along u (None: lines); v_centre(u) likewise along v. group: a physical surface (besides
+        the part) that the block belongs to; outward(p): the direction its elements must face (their
+        normal, right-handed about their node order: what a pressure pushes along), at point p."""
         (u0, u1, nu), (v0, v1, nv) = useg, vseg
         P = [f(u0, v0), f(u1, v0), f(u1, v1), f(u0, v1)]
         c = [self.curve(P[0], P[1], nu, u_centre(v0) if u_centre else None),
@@ -78,6 +83,14 @@ class Part:
         s = gmsh.model.geo.addPlaneSurface([loop]) if planar else gmsh.model.geo.addSurfaceFilling([loop])
         gmsh.model.geo.mesh.setTransfiniteSurface(s)
         gmsh.model.geo.mesh.setRecombine(2, s)
+        if outward is not None:
+            # The mesh follows the orientation of the curve loop P0 P1 P2 P3; reversed where that
+            # faces the other way (checked element by element once meshed).
+            n = np.cross(np.subtract(P[1], P[0]), np.subtract(P[3], P[0]))
+            if np.dot(n, outward(np.mean(P, axis=0))) < 0:
+                gmsh.model.geo.mesh.setReverse(2, s)
+        if group is not None:
+            self.groups.setdefault(group, ([], outward))[0].append(s)
         self.surfaces.append(s)
         self.nblocks += 1
         return s
@@ -96,6 +109,13 @@ class Part:
         gmsh.model.mesh.generate(2)
         gmsh.model.addPhysicalGroup(2, self.surfaces, 1)
         gmsh.model.setPhysicalName(2, 1, self.name)
+        # Groups of surfaces: physical surfaces that boltnet reads as node sets of the part (a pressure
+        # on such a set loads the group's elements: docs/scenes.md, "Pressure").
+        for k, (name, (tags, outward)) in enumerate(sorted(self.groups.items())):
+            gmsh.model.addPhysicalGroup(2, tags, 2 + k)
+            gmsh.model.setPhysicalName(2, 2 + k, name)
+            if outward is not None:
+                self._check_facing(name, tags, outward)
         self.sets = {}
         for k, (name, pred) in enumerate(node_sets.items()):
             tags = [t for t, pts in self.curve_pts.items() if all(pred(p) for p in pts)]
@@ -104,6 +124,20 @@ class Part:
             gmsh.model.addPhysicalGroup(1, tags, 100 + k)
             gmsh.model.setPhysicalName(1, 100 + k, name)
             self.sets[name] = 100 + k
+
+    def _check_facing(self, name, tags, outward):
+        """Every element of the surfaces `tags` faces outward(its centre)."""
+        ntags, xyz, _ = gmsh.model.mesh.getNodes()
+        pos = dict(zip(ntags.tolist(), xyz.reshape(-1, 3)))
+        for s in tags:
+            etypes, _, enodes = gmsh.model.mesh.getElements(2, s)
+            for et, en in zip(etypes, enodes):
+                nn = 4 if et == 3 else 3
+                for q in np.asarray(en).reshape(-1, nn):
+                    X = np.array([pos[int(t)] for t in q])
+                    n = np.cross(X[1] - X[0], X[nn - 1] - X[0])
+                    if np.dot(n, outward(X.mean(axis=0))) <= 0:
+                        raise RuntimeError(f"part {self.name}: an element of surface group '{name}' faces inward at {X.mean(axis=0)}")
 
     def arrays(self):
         """Node coordinates (N, 3), quadrangles (Q, 4) as row indices, node sets as index arrays."""

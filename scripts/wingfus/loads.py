@@ -14,6 +14,12 @@
   With C = M - V (y_tip - y_b), the resultant at the side-of-body section (butt line, mid-chord,
   mid-depth) is the shear V, the bending moment M and the torque T (nose-up positive). Forces are per
   unit load factor: the scene's load table is in g.
+- Cabin pressure (optional): a pressure on the fuselage skin (the surface group "skin", its
+  elements facing outward), the pressurised cabin's differential pressure. Its own load: the wing's
+  rows are the load `wing`, the pressure's `cabin`, and the scene runs them as load cases
+  (scene.write): the wing's load path alone, the pressure alone (up and down), and both at 1 g.
+  One load factor scales every row of a case, so a held pressure under a cycling wing load is not
+  expressible; the cases say what each does.
 """
 import numpy as np
 
@@ -80,3 +86,10 @@ def resultant(rows, xyz_of, sets_of, origin):
         F += f * len(x)
         M += np.cross(x - origin, f).sum(axis=0)
     return F, M
+
+
+def cabin_pressure(a):
+    """The cabin pressure's row (load `cabin`), or none."""
+    if a.cabin_pressure <= 0:
+        return []
+    return [("fuselage", "all", "pressure", a.cabin_pressure, "skin", "cabin")]

@@ -108,10 +108,11 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
         for j in fasteners:
             f.write(f"{j.id},{j.splice},{j.side},{j.row},{j.index},{_num(j.pos)},{j.family},{j.type},{j.d},{j.clearance:.5f},"
                     f"{pid[j.a]},{pid[j.b]},{j.a},{j.b}\n")
+    loads = any(len(r) > 5 for r in bcs)   # rows of a named load (the cabin pressure's cases)
     with open(base + ".bcs.csv", "w") as f:
-        f.write("patch,dof,kind,value,set\n")
-        for part, dof, kind, value, st in bcs:
-            f.write(f"{pid[part]},{dof},{kind},{_num(value)},{st}\n")
+        f.write("patch,dof,kind,value,set" + (",load" if loads else "") + "\n")
+        for part, dof, kind, value, st, *load in bcs:
+            f.write(f"{pid[part]},{dof},{kind},{_num(value)},{st}" + (f",{load[0] if load else ''}" if loads else "") + "\n")
     with open(base + ".linear.opts", "w") as f:
         f.write("# Every junction fastener a linear spring: a preload so large that no fastener ever slides, so each\n"
                 "# one keeps its identified stick stiffness (kt = kc, kn, kr). Use: boltnet -scene NAME.yaml -options_file this\n")
@@ -127,6 +128,13 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
                 f"  reach: {_num(a.coupling_reach)}    # along the bolt: beyond the distance from a fastener to its sheets' mid-surfaces\n")
         f.write(f"load:\n  path: table\n  table: {','.join(_num(v) for v in a.load_table)}   # load factors (g); forces in the bcs table are the 1 g loads\n"
                 f"  steps: {a.load_steps}\n")
+        if a.cabin_pressure > 0:
+            # One load factor scales every row of a case (docs/scenes.md, "Load cases"): the wing's
+            # path alone, the pressure alone, and both together up to 1 g.
+            f.write("  cases: [flight, cabin, cruise]\n  case:\n"
+                    "    flight:   # the wing's load path, unpressurised\n      loads: wing\n"
+                    "    cabin:    # the cabin pressurised and let down, no wing load\n      loads: cabin\n      table: 1,0\n"
+                    "    cruise:   # 1 g with the cabin pressurised, both applied together\n      loads: wing,cabin\n      table: 1\n")
         f.write(f"output:\n  bypass_width: {_num(bypass_width(fasteners))}   # the skin splices' pitch along a row: each fastener's "
                 f"bypass load is its strip's (docs/output.md, \"Bypass\")\n")
     with open(base + ".model.json", "w") as f:
