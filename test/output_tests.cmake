@@ -75,3 +75,20 @@ add_test(NAME lap_rows_bypass_h5 COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURC
 set_tests_properties(lap_rows_bypass_h5 PROPERTIES FIXTURES_REQUIRED "lap_rows_np1;lap_rows_h5only_np3")
 add_test(NAME lap_rows_h5only_no_bypass_csv COMMAND ${BOLTNET_PYTHON} -c "import os,sys; d=sys.argv[1]; has=os.path.exists(d + '/bypass.csv'); print('bypass.csv written' if has else 'no bypass.csv, as asked'); sys.exit(1 if has or not os.path.exists(d + '/joints.h5') else 0)" ${BOLTNET_OUT}/lap_rows_h5only_np3)
 set_tests_properties(lap_rows_h5only_no_bypass_csv PROPERTIES FIXTURES_REQUIRED lap_rows_h5only_np3)
+
+# A footprint named by a node set (the fastener table's column `footprint`, docs/scenes.md): the strip
+# cantilever's end edge tied to the load's rigid patch through a joint 50 mm beyond the strip (the
+# set's nodes follow it rigidly however far, with -coupling_radius too small to find any), against
+# the same closed forms, on 1, 2 and 3 ranks; a set the part lacks and node coupling are refused.
+foreach(ranks 1 2 3)
+  boltnet_run(strip_tie ${ranks} ${BOLTNET_TEST_SCENES}/strip-cantilever.yaml -scene_joints ${BOLTNET_TEST_SCENES}/strip-tie.joints.csv -coupling_radius 1)
+  add_test(NAME strip_tie_stresses_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_stresses.py ${BOLTNET_OUT}/strip_tie_np${ranks}
+            --length 150 --width 20 --thickness 2 --fz 1000 --fx 2000)
+  set_tests_properties(strip_tie_stresses_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_tie_np${ranks})
+endforeach()
+set(_tie ${BOLTNET_MPIRUN} 2 --oversubscribe $<TARGET_FILE:boltnet_driver> -output_dir ${BOLTNET_OUT}/bad -scene ${BOLTNET_TEST_SCENES}/strip-cantilever.yaml)
+boltnet_expect(bad_tie_no_set 2 ${_bad} --match "Joint 0: its footprint is node set 'tip', which patch 0 does not have"
+  -- ${_tie} -scene_joints ${BOLTNET_TEST_SCENES}/tie-noset.joints.csv)
+boltnet_expect(bad_tie_node_coupling 2 ${_bad} --match "Joint 0: its footprint is node set 'xmax', which needs -coupling_type exact or penalty"
+  -- ${_tie} -scene_joints ${BOLTNET_TEST_SCENES}/strip-tie.joints.csv -coupling_type node)

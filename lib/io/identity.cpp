@@ -150,6 +150,7 @@ PetscErrorCode CheckpointIdentify(BoltnetAssembly a, const std::string &scene, C
       joints.Add(j.positioned);
       joints.Add(j.lever);
       if (j.lever) joints.Add(j.at_a), joints.Add(j.at_b);
+      if (j.footprint[0]) joints.Add(std::string(j.footprint.data()));
     }
     for (const BCDesc &b : m.bcs) {
       bcs.Add(b.patch);

@@ -295,6 +295,7 @@ struct FastenerRow {
   PetscReal n[3], t[3], pos[3];
   bool      positioned;
   size_t    type;
+  std::string footprint; // a node set named as the footprint (column `footprint`; empty: found)
 };
 
 // The rows of the fastener table, and its joint types with the first joint of each, in the order of
@@ -318,6 +319,8 @@ PetscErrorCode FastenerRows(MPI_Comm comm, const Table &joints, std::vector<Fast
       PetscCall(RealCell(comm, joints, r, tc[k], &f.t[k]));
     }
     for (int k = 0; k < 3 && f.positioned; ++k) PetscCall(RealCell(comm, joints, r, xc[k], &f.pos[k]));
+    if (HasColumn(joints, "footprint")) PetscCall(Cell(comm, joints, r, "footprint", &f.footprint));
+    PetscCheck(f.footprint.empty() || f.positioned, comm, PETSC_ERR_USER_INPUT, "%s line %d: a joint with a footprint set needs its position (columns x, y, z): the set's nodes follow the joint node there", joints.path.c_str(), joints.lines[r]);
     auto it = seen.find(type);
     if (it == seen.end()) {
       it = seen.emplace(type, firsts->size()).first;
@@ -434,7 +437,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscOptionsBegin(comm, nullptr, "boltnet scene", "boltnet");
   PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
   PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,elements,mesh,part,material] (kind rigid, plate or gmsh; elements quad, tri or mixed)", "", fp, fp, sizeof(fp), nullptr));
-  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z] (n bolt axis, t1 first in-plane direction, x position)", "", fj, fj, sizeof(fj), nullptr));
+  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z,footprint] (n bolt axis, t1 first in-plane direction, x position; footprint: a node set that follows the joint rigidly instead of -coupling_radius's)", "", fj, fj, sizeof(fj), nullptr));
   PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set,load] (dof ux..rz or all; kind fixed, displacement, force or pressure; value per unit load factor, mm, N or MPa; set: a shell patch's node set (a pressure loads the elements within it); load: the load it belongs to, for -load_cases)", "", fb, fb, sizeof(fb), nullptr));
   PetscOptionsEnd();
   scene->name = name;
@@ -555,7 +558,10 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscCall(SceneJointTypes(comm, a, &firsts, &types, scene));
   PetscCall(Collective(comm, "reading the scene", [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
-    for (const FastenerRow &f : rows) PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &types[f.type], f.n, f.t, f.positioned ? f.pos : nullptr));
+    for (const FastenerRow &f : rows) {
+      PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &types[f.type], f.n, f.t, f.positioned ? f.pos : nullptr));
+      if (!f.footprint.empty()) PetscCall(AssemblySetJointFootprint(a, f.id, f.footprint.c_str()));
+    }
     PetscFunctionReturn(0);
   }));
   if (rank == 0) PetscCall(PetscInfo(nullptr, "Read the fastener table's %zu rows on this rank\n", rows.size()));

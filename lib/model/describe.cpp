@@ -204,6 +204,20 @@ PetscErrorCode AssemblyAddShellOnRank0(BoltnetAssembly a, PetscInt id, const std
   PetscFunctionReturn(0);
 }
 
+PetscErrorCode AssemblySetJointFootprint(BoltnetAssembly a, PetscInt id, const char set[])
+{
+  PetscFunctionBeginUser;
+  const size_t n = std::strlen(set);
+  PetscCheck(n > 0 && n < JointDesc::kFootprintMax, a->comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": footprint set '%s' must be a node set's name of 1 to %zu characters", id, set, JointDesc::kFootprintMax - 1);
+  // Rank 0 holds the model's joints (the others may hold none: model.hpp).
+  for (auto it = a->model.joints.rbegin(); it != a->model.joints.rend(); ++it)
+    if (it->id == id) {
+      std::copy(set, set + n + 1, it->footprint.begin());
+      break;
+    }
+  PetscFunctionReturn(0);
+}
+
 PetscErrorCode AssemblyAddFullSpring(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const std::array<double, 36> &K, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3], const PetscReal *at_a, const PetscReal *at_b)
 {
   BoltnetJointParams p;

@@ -54,6 +54,12 @@ struct JointDesc {
   // at_b, each carrying the joint at x through a rigid lever (docs/joint-laws.md, "Where a joint acts").
   bool                  lever = false;
   std::array<double, 3> at_a{}, at_b{};
+  // A footprint named by the user (AssemblySetJointFootprint): on each shell part it joins, the nodes
+  // of this node set follow the joint node rigidly, instead of the nodes that -coupling_radius finds:
+  // a rigid patch tied to a whole section (an RBE2), e.g. to load a wing box's tip. Empty: found.
+  // A fixed array, since joint descriptions travel between ranks as bytes (patch/share.cpp).
+  static constexpr size_t kFootprintMax = 48;
+  std::array<char, kFootprintMax> footprint{};
 };
 
 struct BCDesc {

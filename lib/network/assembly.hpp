@@ -201,6 +201,9 @@ PetscErrorCode AssemblyAddShellOnRank0(BoltnetAssembly a, PetscInt id, const std
 // neither), side a attaches at the point at_a (node coupling: the part's node nearest it; a rigid
 // part: its node) and carries the spring at x by a rigid lever, and side b likewise: a Nastran
 // CBUSH between grids that do not coincide (docs/nastran.md).
+// The footprint of joint `id` (already added) on the shell parts it joins: the nodes of their node
+// set `set` (JointDesc::footprint); needs -coupling_type exact or penalty, checked at set-up.
+PetscErrorCode AssemblySetJointFootprint(BoltnetAssembly a, PetscInt id, const char set[]);
 PetscErrorCode AssemblyAddFullSpring(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const std::array<double, 36> &K, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3], const PetscReal *at_a = nullptr, const PetscReal *at_b = nullptr);
 
 // The network (network/build.cpp): lays the model out, builds and distributes the DMNetwork,

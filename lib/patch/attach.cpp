@@ -4,7 +4,9 @@
 #include "core/guard.hpp"
 #include "mesh/search.hpp"
 
+#include <algorithm>
 #include <memory>
+#include <string>
 
 namespace boltnet {
 namespace {
@@ -47,6 +49,8 @@ PetscErrorCode AttachJoints(MPI_Comm comm, Model &m, const LayoutOptions &o, std
       ShellPatch::JointNode jn;
       jn.x    = j.x;
       jn.axis = {j.R[0], j.R[1], j.R[2]};
+      const std::string named(j.footprint.data());
+      PetscCheck(named.empty() || o.coupling != CouplingType::Node, comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": its footprint is node set '%s', which needs -coupling_type exact or penalty (node coupling has no footprint)", j.id, named.c_str());
       if (o.coupling == CouplingType::Node) {
         // A levered joint attaches at its side's own point (a CBUSH's GA or GB), not at x.
         const std::array<double, 3> at = j.lever ? (side ? j.at_b : j.at_a) : jn.x;
@@ -55,8 +59,17 @@ PetscErrorCode AttachJoints(MPI_Comm comm, Model &m, const LayoutOptions &o, std
         jnode[2 * ji + side] = nd;
         continue;
       }
-      jn.footprint = finder->CouplingFootprint(jn.x, jn.axis, o.radius);
-      PetscCheck(!jn.footprint.empty(), comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " at (%g, %g, %g) mm: no node of patch %" PetscInt_FMT " lies within the footprint radius %g mm (-coupling_radius) on a sheet within %g mm of it along its axis (-coupling_reach): the joint is outside the part", j.id, j.x[0], j.x[1], j.x[2], pid, o.radius, reach);
+      if (!named.empty()) {
+        // A footprint the user named: the set's nodes, however far from the joint (a tie).
+        auto set = sh->second.mesh.node_sets.find(named);
+        PetscCheck(set != sh->second.mesh.node_sets.end(), comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT ": its footprint is node set '%s', which patch %" PetscInt_FMT " does not have", j.id, named.c_str(), pid);
+        jn.footprint = set->second;
+        std::sort(jn.footprint.begin(), jn.footprint.end());
+        jn.footprint.erase(std::unique(jn.footprint.begin(), jn.footprint.end()), jn.footprint.end());
+      } else {
+        jn.footprint = finder->CouplingFootprint(jn.x, jn.axis, o.radius);
+        PetscCheck(!jn.footprint.empty(), comm, PETSC_ERR_USER_INPUT, "Joint %" PetscInt_FMT " at (%g, %g, %g) mm: no node of patch %" PetscInt_FMT " lies within the footprint radius %g mm (-coupling_radius) on a sheet within %g mm of it along its axis (-coupling_reach): the joint is outside the part", j.id, j.x[0], j.x[1], j.x[2], pid, o.radius, reach);
+      }
       jnode[2 * ji + side] = sh->second.nnodes();
       sh->second.joint_nodes.push_back(jn);
       jointOf[pos].push_back({(PetscInt)ji, side});
