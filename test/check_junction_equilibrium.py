@@ -13,7 +13,8 @@ force on the box's side in global axes, from joints.csv or joints.h5 (force f on
 t2: the joint pulls node A with +f and node B with -f); M_j = kr (theta_B - theta_A), the rotational
 spring's moment, with each node's rotation read in fields.h5 at its footprint (exact coupling: every
 footprint node turns with the joint node) and kr from summary.json (identified types) or the scene
-(spring types). Joints with both sides in the box (the attachments) cancel.
+(spring types). Joints with both sides in the box (the attachments, and with --tip-load rigid the ties
+of the rigid patch that carries the tip load) cancel.
 
 Tolerance: the driver accepts a step when its out-of-balance force is below -load_equilibrium_rtol
 (1e-6) of the problem's force scale, the largest of the applied loads, the reactions and the joint
@@ -91,13 +92,16 @@ def main():
         t1 /= np.linalg.norm(t1)
         x = np.array([float(r[k]) for k in ("x", "y", "z")])
         frames[j] = (n, t1, np.cross(n, t1), x)
-        nodes[j] = (footprint_node(int(r["patch_a"]), x), footprint_node(int(r["patch_b"]), x))
+        if r["type"] != "tie":   # a tie joins a rigid patch to the box: inside the free body, never read
+            nodes[j] = (footprint_node(int(r["patch_a"]), x), footprint_node(int(r["patch_b"]), x))
     steps = {}
     for r in joint_rows(res):
         steps.setdefault(int(r["step"]), []).append(r)
     worst = 0.0
     for wing in model["wings"]:
-        box = {pid[p] for p in wing["parts"]}
+        # With --tip-load rigid the rigid patch that carries the tip load belongs to the free body: its
+        # ties to the box are internal, the load on it external.
+        box = {pid[p] for p in wing["parts"]} | ({model["rigid_patches"][wing["rigid"]]} if "rigid" in wing else set())
         O = np.array(wing["origin"])
         Ft, Mt = tip * np.array(wing["force"]), tip * np.array(wing["moment"])
         for step, rows in sorted(steps.items()):

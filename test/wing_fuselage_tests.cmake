@@ -189,3 +189,17 @@ endforeach()
 add_test(NAME wing_tiny_cabin_flight_as_without
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_tiny_np1/joints.csv ${BOLTNET_OUT}/wing_tiny_cabin_np2/flight/joints.csv 1e-8)
 set_tests_properties(wing_tiny_cabin_flight_as_without PROPERTIES FIXTURES_REQUIRED "wing_tiny_np1;wing_tiny_cabin_np2")
+
+# The tip load through a rigid patch (--tip-load rigid): a 6-dof node at the tip section's centre
+# tied to each part's whole tip section (fastener table column `footprint`), loaded with the beam
+# loads' resultant. With the rigid patch in the free body, each outer box is again held by the
+# side-of-body fasteners alone, which balance the tip load at every step, on 1 and 2 ranks.
+add_test(NAME wing_make_tiny_rigid COMMAND ${_wfgen} ${_wf} tinyr --size tiny --load-steps 2 --tip-load rigid)
+set_tests_properties(wing_make_tiny_rigid PROPERTIES FIXTURES_SETUP wing_tiny_rigid_scene)
+foreach(ranks 1 2)
+  boltnet_run(wing_tiny_rigid ${ranks} ${_wf}/tinyr.yaml ${_exact})
+  set_tests_properties(run_wing_tiny_rigid_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_tiny_rigid_scene)
+  add_test(NAME wing_tiny_rigid_equilibrium_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_rigid_np${ranks} ${_wf}/tinyr.yaml 1e-6)
+  set_tests_properties(wing_tiny_rigid_equilibrium_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tiny_rigid_scene;wing_tiny_rigid_np${ranks}")
+endforeach()

@@ -14,6 +14,12 @@
   With C = M - V (y_tip - y_b), the resultant at the side-of-body section (butt line, mid-chord,
   mid-depth) is the shear V, the bending moment M and the torque T (nose-up positive). Forces are per
   unit load factor: the scene's load table is in g.
+- With --tip-load rigid, the same resultant enters through a rigid patch instead (rigid_tip): a
+  6-dof node at the tip section's centre, tied to the whole section of each of the box's three
+  parts (its node set `tip`) by a stiff spring joint whose footprint is that set (docs/scenes.md,
+  "Ties"): Nastran's RBE2 on the tip. The section then stays plane and undistorted, which stiffens
+  the last rib bay; the beam-theory stresses leave it free. The rib bays between the tip and the
+  joint make the two agree at the joint (St-Venant): docs/wing-fuselage.md.
 - Cabin pressure (optional): a pressure on the fuselage skin (the surface group "skin", its
   elements facing outward), the pressurised cabin's differential pressure. Its own load: the wing's
   rows are the load `wing`, the pressure's `cabin`, and the scene runs them as load cases
@@ -93,3 +99,18 @@ def cabin_pressure(a):
     if a.cabin_pressure <= 0:
         return []
     return [("fuselage", "all", "pressure", a.cabin_pressure, "skin", "cabin")]
+
+
+def rigid_tip(g, s, t, rows, xyz_of, sets_of, origin):
+    """The tip load of one wing through a rigid patch: its position P (the tip section's centre),
+    the tie joints (part, joint axis n, t1) from it to each part of the box, and its bcs rows: the
+    force and moment at P with the same resultant about `origin` as the beam-theory rows."""
+    F, M = resultant(rows, xyz_of, sets_of, origin)
+    P = np.array([g.b / 2, s * g.y_tip, (g.z_up + g.z_lo) / 2])
+    MP = M - np.cross(P - origin, F)
+    ties = [(f"outer_{p}{t}", (0.0, float(s), 0.0), (1.0, 0.0, 0.0)) for p in ("upper", "lower", "sub")]
+    names = ("ux", "uy", "uz", "rx", "ry", "rz")
+    # Components at round-off of the resultant (the beam rows' sums) are zero.
+    v = [c if abs(c) > 1e-9 * np.abs(F).max() else 0.0 for c in F] + [c if abs(c) > 1e-9 * np.abs(MP).max() else 0.0 for c in MP]
+    bcs = [(f"tip_load{t}", names[k], "force", float(c), "") for k, c in enumerate(v) if c != 0.0]
+    return P, ties, bcs

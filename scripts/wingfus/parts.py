@@ -106,7 +106,8 @@ def near(v, w):
 
 
 def node_sets(name, g, half):
-    """Node sets (physical curves) of a part: symmetry plane, fuselage ends, loaded tip sections."""
+    """Node sets (physical curves) of a part: symmetry plane, fuselage ends, loaded tip sections
+    (each piece for the beam-theory loads, and the whole section, `tip`, for a rigid loading patch)."""
     sets = {}
     if half and (name == "fuselage" or name.startswith("centre")):
         sets["sym"] = lambda p: near(p[1], 0.0)
@@ -114,6 +115,8 @@ def node_sets(name, g, half):
         sets["fwd_end"] = lambda p: near(p[0], g.x_min)
         sets["aft_end"] = lambda p: near(p[0], g.x_max)
     tip = lambda p: near(abs(p[1]), g.y_tip)
+    if name.startswith("outer"):
+        sets["tip"] = tip
     if name.startswith("outer") and ("upper" in name or "lower" in name):
         sets["tip_front_overhang"] = lambda p: tip(p) and p[0] <= 1e-6
         sets["tip_box"] = lambda p: tip(p) and -1e-6 <= p[0] <= g.b + 1e-6

@@ -90,19 +90,30 @@ def bypass_width(fasteners):
     return min(gaps) if gaps else 0.0  # one fastener a row: no pitch, the driver's default (0)
 
 
-def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model):
+def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model, rigid=(), ties=()):
+    """rigid: (name, position) of rigid patches (after the shell parts); ties: (rigid patch, part,
+    axis, t1) of joints of type `tie` from a rigid patch to the part's node set `tip`, at the rigid
+    patch's position."""
     os.makedirs(out, exist_ok=True)
     base = os.path.join(out, name)
     pid = {p["name"]: k + 1 for k, p in enumerate(part_info)}
+    pid.update({r: len(part_info) + 1 + k for k, (r, _) in enumerate(rigid)})
+    model["rigid_patches"] = {r: pid[r] for r, _ in rigid}
     with open(base + ".patches.csv", "w") as f:
         f.write(f"# {name}: one Gmsh part per file (scripts/make-wing-fuselage)\nid,kind,x,y,z,mesh,part,material\n")
         for p in part_info:
             f.write(f"{pid[p['name']]},gmsh,0,0,0,{p['file']},{p['name']},{p['material']}\n")
+        for r, P in rigid:
+            f.write(f"{pid[r]},rigid," + ",".join(_num(c) for c in P) + ",,,\n")
+    where = dict(rigid)
     with open(base + ".joints.csv", "w") as f:
-        f.write("id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z,x,y,z\n")
+        f.write("id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z,x,y,z" + (",footprint" if ties else "") + "\n")
         for j in fasteners:
             v = list(j.n) + list(j.t1) + list(j.x)
-            f.write(f"{j.id},{pid[j.a]},{pid[j.b]},{j.type}," + ",".join(_num(c) for c in v) + "\n")
+            f.write(f"{j.id},{pid[j.a]},{pid[j.b]},{j.type}," + ",".join(_num(c) for c in v) + ("," if ties else "") + "\n")
+        for k, (r, part, n, t1) in enumerate(ties):
+            v = list(n) + list(t1) + list(where[r])
+            f.write(f"{len(fasteners) + 1 + k},{pid[r]},{pid[part]},tie," + ",".join(_num(c) for c in v) + ",tip\n")
     with open(base + ".fasteners.csv", "w") as f:
         f.write("joint,splice,side,row,index,position,family,type,d,clearance,patch_a,patch_b,part_a,part_b\n")
         for j in fasteners:
