@@ -196,14 +196,14 @@ PetscErrorCode AssemblyAddShellRead(BoltnetAssembly a, PetscInt id, std::int64_t
 // `mesh` (node sets included) is the mesh on rank 0 and ignored elsewhere. Rank 0 sends it to the
 // rank that lays the part out.
 PetscErrorCode AssemblyAddShellOnRank0(BoltnetAssembly a, PetscInt id, const std::array<double, 3> &x0, std::int64_t size, ShellMesh &&mesh, const shell::ShellMaterial &material);
+// The footprint of joint `id` (already added) on the shell parts it joins: the nodes of their node
+// set `set` (JointDesc::footprint); needs -coupling_type exact or penalty, checked at set-up.
+PetscErrorCode AssemblySetJointFootprint(BoltnetAssembly a, PetscInt id, const char set[]);
 // A linear spring joint with a full stiffness K (6 x 6, row major, in the joint frame n, t1,
 // t2 = n x t1: Params::full) acting at x (model/describe.cpp). With at_a and at_b (both or
 // neither), side a attaches at the point at_a (node coupling: the part's node nearest it; a rigid
 // part: its node) and carries the spring at x by a rigid lever, and side b likewise: a Nastran
 // CBUSH between grids that do not coincide (docs/nastran.md).
-// The footprint of joint `id` (already added) on the shell parts it joins: the nodes of their node
-// set `set` (JointDesc::footprint); needs -coupling_type exact or penalty, checked at set-up.
-PetscErrorCode AssemblySetJointFootprint(BoltnetAssembly a, PetscInt id, const char set[]);
 PetscErrorCode AssemblyAddFullSpring(BoltnetAssembly a, PetscInt id, PetscInt patch_a, PetscInt patch_b, const std::array<double, 36> &K, const PetscReal normal[3], const PetscReal t1[3], const PetscReal x[3], const PetscReal *at_a = nullptr, const PetscReal *at_b = nullptr);
 
 // The network (network/build.cpp): lays the model out, builds and distributes the DMNetwork,

@@ -52,8 +52,8 @@ void CutShellPart(ShellPatch &&part, PetscInt first, long max_nodes, Layout *L, 
     nodemap[v] = {first + cut.patch[v], local[v]};
   }
   // The node sets each part node is in (as many entries as the sets have members, however many sets).
-  std::vector<const std::string *>        set_name;
-  std::vector<std::vector<int>>           sets_of(n);
+  std::vector<const std::string *> set_name;
+  std::vector<std::vector<int>>    sets_of(n);
   for (const auto &[name, members] : part.mesh.node_sets) {
     for (int v : members) sets_of[v].push_back((int)set_name.size());
     set_name.push_back(&name);
