@@ -123,6 +123,11 @@ static PetscErrorCode TestDescription(BoltnetAssembly a)
     EXPECT(BoltnetAssemblyAddBCOnSet(b, 5, "edge", -1, BOLTNET_BC_FIXED, 0), PETSC_ERR_USER_INPUT, "patch 5", "no node set 'edge'");
     PetscCall(BoltnetAssemblyAddNodeSet(b, 5, "edge", 2, nodes));
     PetscCall(BoltnetAssemblyAddBCOnSet(b, 5, "edge", -1, BOLTNET_BC_FIXED, 0));
+    /* A pressure acts along the elements' normals (dof -1 only), on a shell patch only. */
+    EXPECT(BoltnetAssemblyAddBCOnSet(b, 5, NULL, 2, BOLTNET_BC_PRESSURE, 0.1), PETSC_ERR_USER_INPUT, "Pressure on patch 5", "its dof is -1 (all), not 2");
+    PetscCall(BoltnetAssemblyAddRigidPatch(b, 6, x0));
+    EXPECT(BoltnetAssemblyAddBC(b, 6, -1, BOLTNET_BC_PRESSURE, 0.1), PETSC_ERR_USER_INPUT, "Pressure on patch 6", "it is not a shell patch");
+    PetscCall(BoltnetAssemblyAddBCOnSet(b, 5, NULL, -1, BOLTNET_BC_PRESSURE, 0.1));
     PetscCall(BoltnetAssemblyDestroy(&b));
   }
 

@@ -10,18 +10,23 @@ set(_wfgen ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-wing-fuselage)
 # factorisation's joints and the same balance (wing_tiny_condensed).
 set(_exact -patch_condense false)
 
+# wing_tiny_balanced(NAME GENERATOR-ARGS...): the tiny junction NAME generated with the arguments,
+# run on 1 and 2 ranks. Each outer box is held only by the side-of-body fasteners: they balance its
+# tip load at every step (check_junction_equilibrium.py says why 1e-6).
+function(wing_tiny_balanced name)
+  add_test(NAME wing_make_${name} COMMAND ${_wfgen} ${_wf} ${name} --size tiny --load-steps 2 ${ARGN})
+  set_tests_properties(wing_make_${name} PROPERTIES FIXTURES_SETUP wing_${name}_scene)
+  foreach(ranks 1 2)
+    boltnet_run(wing_${name} ${ranks} ${_wf}/${name}.yaml ${_exact})
+    set_tests_properties(run_wing_${name}_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_${name}_scene)
+    add_test(NAME wing_${name}_equilibrium_np${ranks}
+      COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_${name}_np${ranks} ${_wf}/${name}.yaml 1e-6)
+    set_tests_properties(wing_${name}_equilibrium_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_${name}_scene;wing_${name}_np${ranks}")
+  endforeach()
+endfunction()
+
 # The frictional scene along its load path (1 g, 2.5 g, -1 g, 0; two steps per segment).
-add_test(NAME wing_make_tiny COMMAND ${_wfgen} ${_wf} tiny --size tiny --load-steps 2)
-set_tests_properties(wing_make_tiny PROPERTIES FIXTURES_SETUP wing_tiny_scene)
-foreach(ranks 1 2)
-  boltnet_run(wing_tiny ${ranks} ${_wf}/tiny.yaml ${_exact})
-  set_tests_properties(run_wing_tiny_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_tiny_scene)
-  # Each outer box is held only by the side-of-body fasteners: they balance its tip load at every
-  # step (check_junction_equilibrium.py says why 1e-6).
-  add_test(NAME wing_tiny_equilibrium_np${ranks}
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_np${ranks} ${_wf}/tiny.yaml 1e-6)
-  set_tests_properties(wing_tiny_equilibrium_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np${ranks}")
-endforeach()
+wing_tiny_balanced(tiny)
 # The bypass strip's width comes from the scene's output: section (the skin splices' pitch along a
 # row), read after the scene's options, and the command line still wins (check_junction_bypass.py).
 add_test(NAME wing_tiny_bypass_width
@@ -194,12 +199,4 @@ set_tests_properties(wing_tiny_cabin_flight_as_without PROPERTIES FIXTURES_REQUI
 # tied to each part's whole tip section (fastener table column `footprint`), loaded with the beam
 # loads' resultant. With the rigid patch in the free body, each outer box is again held by the
 # side-of-body fasteners alone, which balance the tip load at every step, on 1 and 2 ranks.
-add_test(NAME wing_make_tiny_rigid COMMAND ${_wfgen} ${_wf} tinyr --size tiny --load-steps 2 --tip-load rigid)
-set_tests_properties(wing_make_tiny_rigid PROPERTIES FIXTURES_SETUP wing_tiny_rigid_scene)
-foreach(ranks 1 2)
-  boltnet_run(wing_tiny_rigid ${ranks} ${_wf}/tinyr.yaml ${_exact})
-  set_tests_properties(run_wing_tiny_rigid_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_tiny_rigid_scene)
-  add_test(NAME wing_tiny_rigid_equilibrium_np${ranks}
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_rigid_np${ranks} ${_wf}/tinyr.yaml 1e-6)
-  set_tests_properties(wing_tiny_rigid_equilibrium_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tiny_rigid_scene;wing_tiny_rigid_np${ranks}")
-endforeach()
+wing_tiny_balanced(tinyr --tip-load rigid)
