@@ -34,10 +34,10 @@ def fuselage(P, g, s):
     cut0, cut1 = g.x_cut
     incut = lambda us: us[0] >= cut0 - 1e-9 and us[1] <= cut1 + 1e-9
     keep = lambda us, vs: not (incut(us) and vs[1] <= g.th_e + 1e-12)
-    # The skin is the surface group "skin", its elements facing away from the axis: the cabin
-    # pressure's node set (loads.cabin_pressure).
-    P.blocks(cyl(R, s), g.x_fus, g.th_fus, keep, v_centre=lambda x: (x, 0.0, 0.0), planar=False,
-             group="skin", outward=lambda p: (0.0, p[1], p[2]))
+    # With a cabin pressure the skin is the surface group "skin", its elements facing away from the
+    # axis: the pressure's node set (loads.cabin_pressure). Without, the mesh files stay as they were.
+    skin = dict(group="skin", outward=lambda p: (0.0, p[1], p[2])) if a.cabin_pressure > 0 else {}
+    P.blocks(cyl(R, s), g.x_fus, g.th_fus, keep, v_centre=lambda x: (x, 0.0, 0.0), planar=False, **skin)
     r_in, r_st = R - a.frame_depth, R - a.stringer_depth
     rg = Grid([(r_in, r_st, 1), (r_st, R, 1)]) if a.frame_depth > a.stringer_depth + 1e-9 else Grid([(r_in, R, 1)])
     for xk in g.frames:
