@@ -41,22 +41,27 @@ void AddPressure(const ShellPatch &sp, const std::string &set, double p, std::ma
 }
 
 // The forces on footprint nodes, which exact coupling makes slaves of their joint node (u_s = T u_m,
-// patch.hpp: ExactSlaves), moved to the joint node as T^T f_s: the same virtual work for every
-// motion the coupling allows, and the slave rows, which hold the constraint, free of load.
+// patch.hpp: SlaveTransform), moved to the joint node as T^T f_s: the same virtual work for every
+// motion the coupling allows, and the slave rows, which hold the constraint, free of load. Only the
+// footprints are visited (AttachJoints has given each node to one joint node).
 void MoveToJointNodes(const ShellPatch &sp, std::map<PetscInt, double> &force)
 {
-  const SlaveMap s = ExactSlaves(sp);
-  std::map<PetscInt, double> moved;
-  for (auto it = force.begin(); it != force.end();) {
-    const PetscInt node = it->first / 6, i = it->first % 6;
-    if (node >= (PetscInt)s.master.size() || s.master[node] < 0) {
-      ++it;
-      continue;
+  const PetscInt nmesh = (PetscInt)sp.mesh.x.size();
+  for (size_t k = 0; k < sp.joint_nodes.size(); ++k) {
+    const ShellPatch::JointNode &jn = sp.joint_nodes[k];
+    std::array<double, 6>        m{};
+    bool                         any = false;
+    for (int n : jn.footprint) {
+      auto it = force.lower_bound(6 * (PetscInt)n);
+      if (it == force.end() || it->first >= 6 * (PetscInt)n + 6) continue;
+      const auto T = SlaveTransform({sp.mesh.x[n][0] - jn.x[0], sp.mesh.x[n][1] - jn.x[1], sp.mesh.x[n][2] - jn.x[2]});
+      for (; it != force.end() && it->first < 6 * (PetscInt)n + 6; it = force.erase(it))
+        for (int j = 0; j < 6; ++j) m[j] += T[6 * (it->first % 6) + j] * it->second;
+      any = true;
     }
-    for (int j = 0; j < 6; ++j) moved[6 * s.master[node] + j] += s.T[node][6 * i + j] * it->second;
-    it = force.erase(it);
+    if (any)
+      for (int j = 0; j < 6; ++j) force[6 * (nmesh + (PetscInt)k) + j] += m[j];
   }
-  for (const auto &[dof, v] : moved) force[dof] += v;
 }
 } // namespace
 

@@ -10,6 +10,15 @@ namespace boltnet {
 
 const char *const kCouplingTypeNames[3] = {"penalty", "exact", "node"};
 
+std::array<double, 36> SlaveTransform(const std::array<double, 3> &d)
+{
+  const auto             G = RigidLinkConstraint(d); // g = u_s - [I, -[d]x ...] u_m: T = -G_m
+  std::array<double, 36> T;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) T[6 * i + j] = -G[12 * i + 6 + j];
+  return T;
+}
+
 SlaveMap ExactSlaves(const ShellPatch &p)
 {
   const PetscInt nmesh = (PetscInt)p.mesh.x.size();
@@ -20,11 +29,8 @@ SlaveMap ExactSlaves(const ShellPatch &p)
     const auto &jn = p.joint_nodes[k];
     for (int n : jn.footprint) {
       if (s.master[n] >= 0) throw std::logic_error("a footprint node is the slave of two joint nodes");
-      const std::array<double, 3> d = {p.mesh.x[n][0] - jn.x[0], p.mesh.x[n][1] - jn.x[1], p.mesh.x[n][2] - jn.x[2]};
-      const auto                  G = RigidLinkConstraint(d); // g = u_s - [I, -[d]x ...] u_m: T = -G_m
-      s.master[n]                   = nmesh + (PetscInt)k;
-      for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j) s.T[n][6 * i + j] = -G[12 * i + 6 + j];
+      s.master[n] = nmesh + (PetscInt)k;
+      s.T[n]      = SlaveTransform({p.mesh.x[n][0] - jn.x[0], p.mesh.x[n][1] - jn.x[1], p.mesh.x[n][2] - jn.x[2]});
     }
   }
   return s;

@@ -133,5 +133,7 @@ struct SlaveMap {
   std::vector<std::array<double, 36>> T;      // by mesh node (unused where master < 0)
 };
 SlaveMap ExactSlaves(const ShellPatch &p);
+// T of one slave at d = x_s - x_m from its joint node: u_s = u_m + theta_m x d, theta_s = theta_m.
+std::array<double, 36> SlaveTransform(const std::array<double, 3> &d);
 
 } // namespace boltnet
