@@ -137,7 +137,8 @@ PetscErrorCode DescribeCases(const Source &src, Scene &scene, const DriverOption
 
 // Solves one case (the k-th of n on its set-up) on the assembly that is set up, and writes its
 // results under dir; describe, when given, says what was set up once the result files are open.
-PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, const std::function<PetscErrorCode()> &describe, size_t k, size_t n, int *exitcode, ErrorLog *log, std::string *line)
+// With a reason to skip it, the case is not solved: its summary.json says why, as a failure.
+PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, const DriverOptions &o, const CheckpointIdentity &ident, const std::string &dir, const std::function<PetscErrorCode()> &describe, size_t k, size_t n, const std::string &skip, int *exitcode, ErrorLog *log, std::string *line)
 {
   MPI_Comm comm = PETSC_COMM_WORLD;
   Output   out;
@@ -162,6 +163,7 @@ PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, con
   } else PetscCall(OutputOpen(comm, dir, scene.name, o.fields, o.joints, a, &out));
   out.identified = "{" + scene.identified + "}";
   out.load_case  = c.name;
+  out.continues  = c.continues;
   a->on_step = [&](BoltnetAssembly as, const StepInfo &info) {
     PetscFunctionBeginUser;
     PetscCall(OutputStep(as, info, &out));
@@ -169,7 +171,15 @@ PetscErrorCode SolveCase(BoltnetAssembly a, const LoadCase &c, Scene &scene, con
     PetscFunctionReturn(0);
   };
   if (describe) PetscCall(describe());
-  if (!c.name.empty()) PetscCall(PetscPrintf(comm, "boltnet: load case %s (%zu of %zu on this set-up)\n", c.name.c_str(), k, n));
+  if (!c.name.empty()) PetscCall(PetscPrintf(comm, "boltnet: load case %s (%zu of %zu on this set-up)%s%s%s\n", c.name.c_str(), k, n, c.continues.empty() ? "" : ", from the end of ", c.continues.c_str(), c.continues.empty() ? "" : " with its loads held"));
+  if (!skip.empty()) {
+    PetscCall(PetscPrintf(comm, "boltnet: case %s %s\n", c.name.c_str(), skip.c_str()));
+    PetscCall(OutputSummary(a, &out, "failed", "load case " + c.name + " " + skip));
+    PetscCall(OutputClose(comm, &out));
+    *exitcode = 3;
+    *line     = "boltnet: case " + c.name + ": " + skip;
+    PetscFunctionReturn(0);
+  }
   if (!o.restart.empty()) PetscCall(PetscPrintf(comm, "boltnet: restart from %s at step %zu, load factor %g\n", o.restart.c_str(), a->steps.size(), (double)a->lambda));
 
   // A step that fails beyond the cut-back bound is reported, recorded in summary.json, and the
@@ -261,13 +271,25 @@ PetscErrorCode RunSetUp(const Source &src, Scene &scene, const DriverOptions &o,
     }
     PetscFunctionReturn(0);
   };
-  // Each case from the unloaded state, with its own loads on the one set-up.
+  // Each case from the unloaded state, with its own loads on the one set-up; a case that continues
+  // the one before from where it ended, that case's loads held (docs/scenes.md, "Held loads").
+  bool before_converged = true;
   for (size_t k = 0; k < cases.size(); ++k) {
     const LoadCase &c = cases[k];
-    if (k > 0) PetscCall(AssemblyReset(a));
-    if (k > 0 || !SameConditions(c.bcs, a->model.bcs)) PetscCall(AssemblySetLoads(a, c.bcs));
+    std::string     skip; // why the case is not run
+    if (c.continues.empty()) {
+      if (k > 0) PetscCall(AssemblyReset(a));
+      if (k > 0 || !SameConditions(c.bcs, a->model.bcs)) PetscCall(AssemblySetLoads(a, c.bcs));
+    } else if (before_converged) {
+      PetscCall(AssemblyHoldLoads(a));
+      PetscCall(AssemblySetLoads(a, c.path_bcs));
+    } else {
+      PetscCall(AssemblyReset(a)); // its summary records no step, not those of the case before
+      skip = "not run: the case it continues, " + c.continues + ", did not converge";
+    }
     std::string line; // for the run's closing summary
-    PetscCall(SolveCase(a, c, scene, o, ident, c.name.empty() ? dir : dir + "/" + c.name, k == 0 ? describe : std::function<PetscErrorCode()>(), k + 1, cases.size(), exitcode, log, &line));
+    PetscCall(SolveCase(a, c, scene, o, ident, c.name.empty() ? dir : dir + "/" + c.name, k == 0 ? describe : std::function<PetscErrorCode()>(), k + 1, cases.size(), skip, exitcode, log, &line));
+    before_converged = skip.empty() && a->failure.empty();
     lines->push_back(line);
   }
   PetscFunctionReturn(0);

@@ -122,3 +122,53 @@ foreach(ranks 1 2)
   boltnet_run(fig3c_case_after_strict ${ranks} ${BOLTNET_TEST_SCENES}/fig3c-cases.yaml -load_cases after ${_strict})
   boltnet_compare_case(fig3c_cases_failed after ${ranks} fig3c_cases_failed fig3c_case_after_strict)
 endforeach()
+
+# Held loads (docs/scenes.md, "Held loads"): a case that continues the one before it starts from
+# its end, its loads held, and applies its own loads on top. Each against a closed form:
+# - the strip: tension to 1000 N, then bending to 1000 and back to -1000 N mm with the tension held:
+#   at every step the sum of the two exact solutions (check_strip.py --held), condensed and not;
+# - fig3c's frictional joint: 2000 N along x held while fig3c's cycle is added along x: its closed
+#   form with the force offset by 2000 N, stick, slide and bearing both ways (check_fig3c.py
+#   --held); and pushed along y across the held 2000 N: stick up to the isotropic cone's
+#   sqrt(G^2 - 2000^2) = 2236 N, slide on the cone beyond (check_held_cone.py).
+foreach(ranks 1 2 3)
+  boltnet_run(strip_held ${ranks} ${BOLTNET_TEST_SCENES}/strip-held.yaml)
+  add_test(NAME strip_held_exact_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_strip.py ${BOLTNET_OUT}/strip_held_np${ranks}/bending bending 72000 20 1.27 1e-8 --held tension=1000)
+  set_tests_properties(strip_held_exact_np${ranks} PROPERTIES FIXTURES_REQUIRED strip_held_np${ranks})
+  boltnet_run(fig3c_held ${ranks} ${BOLTNET_TEST_SCENES}/fig3c-held.yaml)
+  add_test(NAME fig3c_held_cycle_closed_form_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${BOLTNET_OUT}/fig3c_held_np${ranks}/cycle/joints.csv 1.5e5 5000 4e4 0.05 3000 --held 2000)
+  set_tests_properties(fig3c_held_cycle_closed_form_np${ranks} PROPERTIES FIXTURES_REQUIRED fig3c_held_np${ranks})
+  boltnet_run(fig3c_held_across ${ranks} ${BOLTNET_TEST_SCENES}/fig3c-held.yaml -load_cases preload,across)
+  add_test(NAME fig3c_held_across_cone_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_held_cone.py ${BOLTNET_OUT}/fig3c_held_across_np${ranks}/across/joints.csv 2000 1.5e5 5000 3000)
+  set_tests_properties(fig3c_held_across_cone_np${ranks} PROPERTIES FIXTURES_REQUIRED fig3c_held_across_np${ranks})
+endforeach()
+boltnet_run(strip_held_uncondensed 1 ${BOLTNET_TEST_SCENES}/strip-held.yaml -patch_condense false)
+add_test(NAME strip_held_uncondensed_exact
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_strip.py ${BOLTNET_OUT}/strip_held_uncondensed_np1/bending bending 72000 20 1.27 1e-8 --held tension=1000)
+set_tests_properties(strip_held_uncondensed_exact PROPERTIES FIXTURES_REQUIRED strip_held_uncondensed_np1)
+
+# A case whose case before failed is not run: its summary.json says why, the run exits 3 (preload
+# pushed past G with one Newton iteration per step and no cut-back).
+boltnet_expect(fig3c_held_after_failure 1 --fail --match "case cycle not run: the case it continues, preload, did not converge"
+  --match "case preload: FAILED at load factor 0"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_TEST_SCENES}/fig3c-held.yaml -output_dir ${BOLTNET_OUT}/fig3c_held_after_failure
+     -load_progress false -load_case_preload_max 7000 -snes_max_it 1 -load_max_cuts 0)
+add_test(NAME fig3c_held_after_failure_summary
+  COMMAND ${BOLTNET_PYTHON} -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s['status']=='failed' and s['continues']=='preload' and s['steps']==0 and 'did not converge' in s['message'] else 1)"
+          ${BOLTNET_OUT}/fig3c_held_after_failure/cycle/summary.json)
+set_tests_properties(fig3c_held_after_failure_summary PROPERTIES DEPENDS fig3c_held_after_failure_np1)
+
+# Bad input: a continued case that does not come just before, or that holds other dof; a case
+# continuing itself.
+set(_fh ${BOLTNET_TEST_SCENES}/fig3c-held.yaml)
+boltnet_expect(bad_held_order 1 ${_bad} ${_one} --match "Load case 'cycle' \\(-load_case_cycle_continues preload\\): the case it continues must be run just before it: 'preload' must come right before 'cycle' in -load_cases"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${_fh} -output_dir ${BOLTNET_OUT}/bad -load_cases cycle,preload)
+boltnet_expect(bad_held_alone 1 ${_bad} ${_one} --match "'preload' must come right before 'cycle' in -load_cases"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${_fh} -output_dir ${BOLTNET_OUT}/bad -load_cases cycle)
+boltnet_expect(bad_held_itself 1 ${_bad} ${_one} --match "Load case 'across' \\(-load_case_across_continues\\): a case cannot continue itself"
+  -- $<TARGET_FILE:boltnet_driver> -scene ${_fh} -output_dir ${BOLTNET_OUT}/bad -load_case_across_continues across)
+boltnet_expect(bad_held_other_dof 2 ${_bad} --match "Load case 'grip' \\(-load_case_grip_continues preload\\) fixes or prescribes other dof than 'preload'"
+  -- ${_run} -scene ${_fh} -scene_bcs ${BOLTNET_TEST_SCENES}/held-other-dof.bcs.csv -load_cases preload,grip -load_case_grip_loads grip -load_case_grip_continues preload)

@@ -11,7 +11,10 @@ du = w + (F - h(w))/ke; otherwise it slides to the w' that solves G s + h(w') = 
 piecewise linear, inverted exactly), du = w' + G s/ke, with h(w) = kg w + (kc - kg) <|w| - j>+ sign(w).
 The same check applies to any joint that carries the whole load along t1 (double-lap): there rtol is
 1e-7, the round-off floor of solves through shell patches (docs/solver.md).
-Usage: check_fig3c.py joints.csv ke kg kc gap G [rtol]
+With --held F0 (a load case that continues one which brought a force F0 below G on, its loads held:
+docs/scenes.md "Held loads"), the force on the joint at each row is F0 plus the row's load, and
+the reference starts from the joint stuck under F0 (slip 0).
+Usage: check_fig3c.py joints.csv ke kg kc gap G [rtol] [--held F0]
 """
 import csv
 import sys
@@ -42,16 +45,23 @@ def force_first_step(F, w, ke, kg, kc, j, G):
 
 
 def main():
-    path = sys.argv[1]
-    ke, kg, kc, j, G = map(float, sys.argv[2:7])
-    rtol = float(sys.argv[7]) if len(sys.argv) > 7 else 1e-9
+    argv = sys.argv[1:]
+    held = 0.0
+    if "--held" in argv:
+        i = argv.index("--held")
+        held = float(argv[i + 1])
+        del argv[i:i + 2]
+    path = argv[0]
+    ke, kg, kc, j, G = map(float, argv[1:6])
+    rtol = float(argv[6]) if len(argv) > 6 else 1e-9
+    assert abs(held) < G, "--held: the held force must leave the joint stuck (|F0| < G)"
     rows = list(csv.DictReader(open(path)))
     assert rows, f"{path}: no rows"
     w = 0.0
     worst = 0.0
     states = set()
     for row in rows:
-        F = float(row["load"])
+        F = held + float(row["load"])
         du, w, state = force_first_step(F, w, ke, kg, kc, j, G)
         got_du, got_f = float(row["du_t1"]), float(row["f_t1"])
         err = abs(got_du - du) / max(abs(du), 1e-3 * j)

@@ -76,11 +76,21 @@ PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vect
     PetscInt          nloads = kMaxLoadCases;
     PetscBool         given  = PETSC_FALSE;
     const std::string title = "Load case '" + name + "'", opt = "-load_case_" + name + "_loads";
+    char              after[256] = "";
+    PetscBool         continues  = PETSC_FALSE;
+    const std::string copt       = "-load_case_" + name + "_continues";
     c.name = name;
     PetscOptionsBegin(comm, nullptr, title.c_str(), "boltnet");
     PetscCall(PetscOptionsStringArray(opt.c_str(), "Loads of this case: names in the column 'load' of the boundary condition table (-scene_bcs); its rows with no load are in every case", "", loads, &nloads, &given));
     PetscCall(LoadPathOfCase(PetscOptionsObject, comm, name, base, &c.path));
+    PetscCall(PetscOptionsString(copt.c_str(), "Start where this load case ends, its loads held at their final values, and apply this case's loads on top (the case just before it in -load_cases: docs/scenes.md, \"Held loads\")", "", after, after, sizeof(after), &continues));
     PetscOptionsEnd();
+    if (continues) {
+      c.continues = after;
+      const auto me = std::find(names.begin(), names.end(), name);
+      PetscCheck(c.continues != name, comm, PETSC_ERR_USER_INPUT, "Load case '%s' (%s): a case cannot continue itself", name.c_str(), copt.c_str());
+      PetscCheck(!run || (me != names.begin() && *(me - 1) == c.continues), comm, PETSC_ERR_USER_INPUT, "Load case '%s' (%s %s): the case it continues must be run just before it: '%s' must come right before '%s' in -load_cases", name.c_str(), copt.c_str(), after, after, name.c_str());
+    }
     std::set<std::string> mine;
     std::string           bad;
     for (PetscInt i = 0; i < (given ? nloads : 0); ++i) {
@@ -93,10 +103,24 @@ PetscErrorCode SceneLoadCases(MPI_Comm comm, const Scene &scene, const std::vect
     PetscCheck(bad.empty(), comm, PETSC_ERR_USER_INPUT, "Load case '%s' (%s): load '%s' is not in the column 'load' of %s (%s%s)", name.c_str(), opt.c_str(), bad.c_str(), scene.bcs_path.c_str(), list.empty() ? "which has no column 'load' or no name in it" : "its loads: ", list.c_str());
     for (size_t r = 0; r < rows.size(); ++r)
       if (scene.bc_loads[r].empty() || mine.count(scene.bc_loads[r])) c.bcs.push_back(rows[r]);
+    if (!c.continues.empty())
+      for (size_t r = 0; r < rows.size(); ++r) {
+        if (scene.bc_loads[r].empty()) { // held by the case before, with its value: the path adds none
+          BCDesc b = rows[r];
+          b.value  = 0;
+          c.path_bcs.push_back(b);
+        } else if (mine.count(scene.bc_loads[r])) c.path_bcs.push_back(rows[r]);
+      }
     if (!run) continue;
     used.insert(mine.begin(), mine.end());
     c.setup = SetUpKey(c.bcs);
     cases->push_back(std::move(c));
+  }
+  // A case that continues another holds the same dof: it runs on the same set-up, from its state.
+  for (const LoadCase &c : *cases) {
+    if (c.continues.empty()) continue;
+    const auto before = std::find_if(cases->begin(), cases->end(), [&](const LoadCase &x) { return x.name == c.continues; });
+    PetscCheck(before != cases->end() && before->setup == c.setup, comm, PETSC_ERR_USER_INPUT, "Load case '%s' (-load_case_%s_continues %s) fixes or prescribes other dof than '%s': a case that continues another must hold the same dof (its loads may add forces, pressures and prescribed values on them)", c.name.c_str(), c.name.c_str(), c.continues.c_str(), c.continues.c_str());
   }
   for (const std::string &l : defined)
     if (!used.count(l)) PetscCall(PetscPrintf(comm, "boltnet: note: load '%s' of %s is in no load case of this run (-load_cases)\n", l.c_str(), scene.bcs_path.c_str()));

@@ -20,6 +20,12 @@ struct LoadCase {
   std::string         name;        // its folder under -output_dir ("subcase-<id>" for a deck's); "" for a run of one case
   std::vector<BCDesc> bcs;         // its boundary conditions, per unit load factor
   LoadPath            path;
+  // A case that continues another (-load_case_<name>_continues, docs/scenes.md "Held loads") starts
+  // where the case just before it in -load_cases ended, with that case's loads held; its path then
+  // scales only the rows of its own loads (path_bcs: its rows of no load, which the case before
+  // holds, with value 0). Empty for a case from the unloaded state.
+  std::string         continues;
+  std::vector<BCDesc> path_bcs;
   // Cases with the same key share one set-up: the key lists the conditions that hold dof (fixed or
   // prescribed: patch, node set, dof), which the set-up depends on; loads differ freely.
   std::string setup;

@@ -119,6 +119,7 @@ struct Output {
   std::string identified = "{}"; // joint types identified from geometry at start-up (Scene)
   RankRange   peak_mb    = {0, 0}; // peak resident MB over the ranks, [smallest, largest] (OutputSummary)
   std::string load_case;         // the load case's name, "" for a run of one case (summary.json)
+  std::string continues;         // the case it continues, its loads held (summary.json), or ""
   PetscBool   fields     = PETSC_FALSE; // write the fields (OutputOpen decides)
   FieldsFile  ff;
 };

@@ -277,6 +277,7 @@ PetscErrorCode OutputSummary(BoltnetAssembly a, Output *out, const std::string &
     j.precision(17);
     j << "{\n  \"scene\": " << JsonString(out->scene);
     if (!out->load_case.empty()) j << ",\n  \"load_case\": " << JsonString(out->load_case);
+    if (!out->continues.empty()) j << ",\n  \"continues\": " << JsonString(out->continues);
     j << ",\n  \"status\": " << JsonString(status) << ",\n  \"message\": " << JsonString(message) << ",\n  \"ranks\": " << a->size
       << ",\n  \"parts\": " << a->layout.nparts << ",\n  \"patches\": " << a->layout.patches.size() << ",\n  \"seams\": " << a->layout.seams.size() << ",\n  \"joints\": " << a->layout.njoints << ",\n  \"dof\": " << a->net.ndof_model << ",\n  \"interface_dof\": " << a->net.ndof_global << ",\n  \"condensed\": " << (a->net.ncondensed > 0 ? "true" : "false") << ",\n  \"condensed_patches\": " << a->net.ncondensed << ",\n  \"dof_imbalance\": " << JsonNumber(a->net.dof_imbalance) << ",\n  \"joint_tangent\": " << JsonString(a->opt.tangent == Tangent::Paper ? "paper" : "consistent")
       << ",\n  \"line_search\": " << JsonString(lstype ? lstype : "") << ",\n  \"linear_solver\": " << JsonString(std::string(ktype ? ktype : "") + "+" + (ptype ? ptype : "") + (stype ? std::string("(") + stype + ")" : ""))

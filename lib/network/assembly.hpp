@@ -108,6 +108,17 @@ struct Boundary {
   PetscReal              fext_norm = 0; // || every applied force || per unit load factor (the model's)
 };
 
+// Loads held at fixed values while the load factor follows a path: those of the load cases that a
+// case continues (AssemblyHoldLoads, docs/scenes.md "Held loads"), on owned rows, as they are (not
+// per unit load factor). The loads the path scales stay in Boundary; the prescribed rows are the
+// same in both (a case may change values, never which dof are held).
+struct HeldLoads {
+  std::vector<PetscReal> dirichlet; // per Boundary::dirichlet_rows entry (empty: none held)
+  std::vector<PetscInt>  force_rows;
+  std::vector<PetscReal> force_values;
+  PetscReal              norm = 0; // an upper bound of || every held force || (a force scale)
+};
+
 struct StepInfo {
   PetscInt  step;       // converged step number (1-based)
   PetscReal load;       // load factor
@@ -154,6 +165,7 @@ struct _p_BoltnetAssembly {
   boltnet::PatchSet        patches;
   boltnet::JointSet        joints;
   boltnet::Boundary        bc;
+  boltnet::HeldLoads       held;
 
   // Solver state.
   SNES      snes      = nullptr;
@@ -249,8 +261,14 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a);
 // record of steps and solves empty, a fresh factorisation next). AssemblySetLoads: the boundary
 // conditions of another case in place of model.bcs: the condensed patches' load terms come from
 // their kept factorisations and the network's rows are rebuilt; an error when the case fixes or
-// prescribes other dof than the set-up (which would need a set-up of its own).
+// prescribes other dof than the set-up (which would need a set-up of its own). AssemblyHoldLoads:
+// the loads at the last converged load factor become held loads (HeldLoads, added to those held
+// before), and the path starts again from load factor 0 at the state reached: a case that continues
+// another (docs/scenes.md, "Held loads"); AssemblySetLoads then gives the loads the new path scales.
 PetscErrorCode AssemblyReset(BoltnetAssembly a);
+PetscErrorCode AssemblyHoldLoads(BoltnetAssembly a);
+// The applied forces' scale at load factor lambda: |lambda| || f || plus the held loads' bound.
+PetscReal AssemblyAppliedForce(BoltnetAssembly a, PetscReal lambda);
 PetscErrorCode AssemblySetLoads(BoltnetAssembly a, const std::vector<BCDesc> &bcs);
 
 // Equilibrium at X for the load factor being solved (solver/equilibrium.cpp): the out-of-balance

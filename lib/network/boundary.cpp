@@ -54,7 +54,8 @@ PetscErrorCode AssemblyApplyDirichlet(BoltnetAssembly a, Vec X, PetscReal lambda
   PetscFunctionBeginUser;
   PetscCall(VecGetOwnershipRange(X, &rstart, nullptr));
   PetscCall(VecGetArray(X, &x));
-  for (size_t i = 0; i < a->bc.dirichlet_rows.size(); ++i) x[a->bc.dirichlet_rows[i] - rstart] = lambda * a->bc.dirichlet_values[i];
+  const std::vector<PetscReal> &held = a->held.dirichlet;
+  for (size_t i = 0; i < a->bc.dirichlet_rows.size(); ++i) x[a->bc.dirichlet_rows[i] - rstart] = lambda * a->bc.dirichlet_values[i] + (held.empty() ? 0.0 : held[i]);
   PetscCall(VecRestoreArray(X, &x));
   PetscFunctionReturn(0);
 }

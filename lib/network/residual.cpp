@@ -48,9 +48,10 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
       f[js.oa[k] + i] -= ga[i];
     }
   }
-  for (const OwnedPatch &op : a->patches.owned) { // the condensed patches' load terms, lambda c
+  for (const OwnedPatch &op : a->patches.owned) { // the condensed patches' load terms, lambda c (+ c_held)
     if (!op.shell || !a->layout.shells.at(op.index).condensed) continue;
     for (PetscInt r = 0; r < op.cond.nb; ++r) f[op.loff + r] += a->lambda_target * op.cond.c[r];
+    for (size_t r = 0; r < op.cond.c_held.size(); ++r) f[op.loff + r] += op.cond.c_held[r];
   }
   PetscCall(RestoreLocalX(a, &Xl, &xl));
   PetscCall(VecRestoreArray(Fl, &f));
@@ -62,16 +63,18 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   // those blocks (jacobian.cpp), so that no second copy of them is kept for the residual.
   PetscCall(MatMultAdd(a->Jbase, X, F, F));
 
-  // Applied forces, then the constrained rows: r = u - lambda * value.
+  // Applied forces, then the constrained rows: r = u - lambda * value (- the held value).
   PetscInt rstart;
   PetscCall(VecGetOwnershipRange(F, &rstart, nullptr));
   PetscCall(VecGetArray(F, &f));
   PetscCall(VecGetArrayRead(X, &x));
-  const Boundary &bc = a->bc;
+  const Boundary  &bc = a->bc;
+  const HeldLoads &h  = a->held;
   for (size_t i = 0; i < bc.force_rows.size(); ++i) f[bc.force_rows[i] - rstart] -= a->lambda_target * bc.force_values[i];
+  for (size_t i = 0; i < h.force_rows.size(); ++i) f[h.force_rows[i] - rstart] -= h.force_values[i];
   for (size_t i = 0; i < bc.dirichlet_rows.size(); ++i) {
     const PetscInt r = bc.dirichlet_rows[i] - rstart;
-    f[r]             = x[r] - a->lambda_target * bc.dirichlet_values[i];
+    f[r]             = x[r] - a->lambda_target * bc.dirichlet_values[i] - (h.dirichlet.empty() ? 0.0 : h.dirichlet[i]);
   }
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(VecRestoreArray(F, &f));

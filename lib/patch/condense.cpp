@@ -313,8 +313,9 @@ PetscErrorCode RecoverPatch(const ShellPatch &p, const CondensedPatch &cp, Petsc
   for (size_t k = 0; k < p.carried.size(); ++k)
     for (int c = 0; c < 6; ++c) u[6 * p.carried[k] + c] = uB[6 * k + c];
   for (const auto &[d, v] : cp.prescribed) u[d] = lambda * v;
+  for (const auto &[d, v] : cp.prescribed_held) u[d] += v;
   if (cp.ni > 0) {
-    // u_I = lambda w0 - K_II^-1 K_IB u_B
+    // u_I = lambda w0 (+ w0_held) - K_II^-1 K_IB u_B
     Mat       K = cp.K.get();
     VecHandle x, y, z;
     PetscCall(MatCreateVecs(K, x.out(), y.out()));
@@ -328,7 +329,7 @@ PetscErrorCode RecoverPatch(const ShellPatch &p, const CondensedPatch &cp, Petsc
     PetscCall(MatSolve(cp.F.get(), y.get(), z.get()));
     const PetscScalar *zz;
     PetscCall(VecGetArrayRead(z.get(), &zz));
-    for (PetscInt i = 0; i < cp.ni; ++i) u[cp.interior[i]] = lambda * cp.w0[i] - zz[i];
+    for (PetscInt i = 0; i < cp.ni; ++i) u[cp.interior[i]] = lambda * cp.w0[i] + (cp.w0_held.empty() ? 0.0 : cp.w0_held[i]) - zz[i];
     PetscCall(VecRestoreArrayRead(z.get(), &zz));
   }
   for (PetscInt nd = 0; nd < nmesh && !cp.slaves.master.empty(); ++nd) {

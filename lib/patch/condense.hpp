@@ -34,6 +34,11 @@ struct CondensedPatch {
   std::vector<PetscInt> interior; // patch dof of each interior unknown (K's rows 0..ni-1)
   std::vector<double>   w0;       // interior displacement per unit load factor when u_B = 0
   std::map<PetscInt, double> prescribed; // interior prescribed dof -> value per unit load factor
+  // Loads held at fixed values while the load factor follows a path (a load case that continues
+  // another: AssemblyHoldLoads): c, w0 and the prescribed values as they are, not per unit load
+  // factor; empty when nothing is held.
+  std::vector<double>        c_held, w0_held;
+  std::map<PetscInt, double> prescribed_held;
   // What the load terms need when the loads change (a load case: CondensedPatchLoads): the row of
   // K of every patch dof (-1: a slave; -2: a prescribed interior dof), and K's entries in the
   // columns of the prescribed dof, as (row of K, patch dof, value).
@@ -57,8 +62,8 @@ PetscErrorCode CondensePatch(const ShellPatch &p, CouplingType type, double pena
 PetscErrorCode CondensedPatchLoads(PetscInt id, const PatchLoads &loads, CondensedPatch *cp);
 
 // Every dof of the patch (6 per node: mesh nodes, then joint nodes) from its port dof uB at load
-// factor lambda: the ports, the interior (one solve with the kept factorisation), the prescribed
-// dof and the slaves.
+// factor lambda (and the held loads, if any): the ports, the interior (one solve with the kept
+// factorisation), the prescribed dof and the slaves.
 PetscErrorCode RecoverPatch(const ShellPatch &p, const CondensedPatch &cp, PetscReal lambda, const PetscScalar *uB, std::vector<double> &u);
 
 } // namespace boltnet

@@ -44,7 +44,7 @@ PetscErrorCode AssemblyEquilibrium(BoltnetAssembly a, Vec X, Equilibrium *eq)
   PetscCall(MPIU_Allreduce(loc, glob, 4, MPIU_REAL, MPIU_SUM, a->comm));
   eq->imbalance = std::sqrt(glob[0]);
   eq->reactions = std::sqrt(glob[1]);
-  eq->applied   = std::abs(a->lambda_target) * a->bc.fext_norm; // also the forces inside condensed patches
+  eq->applied   = AssemblyAppliedForce(a, a->lambda_target); // also the forces inside condensed patches
   eq->joints    = std::sqrt(glob[3]);
   eq->scale     = std::max({eq->reactions, eq->applied, eq->joints, a->checks.force_scale_seen});
   eq->ratio     = eq->scale > 0 ? eq->imbalance / eq->scale : (eq->imbalance > 0 ? PETSC_INFINITY : 0.0);

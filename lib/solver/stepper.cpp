@@ -392,7 +392,7 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   for (const Response &r : resp)
     for (double f : r.force) loc += f * f;
   PetscCall(MPIU_Allreduce(&loc, &fj, 1, MPIU_REAL, MPIU_SUM, a->comm));
-  fext = a->bc.fext_norm * a->bc.fext_norm; // every applied force, also those inside condensed patches
+  fext = AssemblyAppliedForce(a, a->lambda_target); // every applied force, also those inside condensed patches, and the held ones
   PetscCall(VecDuplicate(Xtry, &F));
   PetscCall(AssemblyFormFunction(a->snes, Xtry, F, a));
   PetscCall(VecNorm(F, NORM_2, &r0));
@@ -400,7 +400,7 @@ PetscErrorCode SetStepTolerance(BoltnetAssembly a, Vec Xtry)
   // The forces of the problem: the joints', the applied loads, those of the converged steps before;
   // the step's initial residual only when there is none yet (it holds the increment of a prescribed
   // displacement times the stiffness it acts on, which is no force of the solution).
-  PetscReal scale = PetscMax(PetscMax(std::sqrt(fj), std::abs(a->lambda_target) * std::sqrt(fext)), a->checks.force_scale_seen);
+  PetscReal scale = PetscMax(PetscMax(std::sqrt(fj), fext), a->checks.force_scale_seen);
   if (scale == 0) scale = r0;
   PetscCall(SNESSetTolerances(a->snes, scale > 0 ? 1e-12 * scale : 1e-50, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
   PetscFunctionReturn(0);
