@@ -174,17 +174,21 @@ foreach(ranks 2 3)
 endforeach()
 
 # Cabin pressure (--cabin-pressure, docs/wing-fuselage.md): the pressure on the fuselage skin is its
-# own load, and the scene runs three load cases on one set-up: the wing's path (flight), the pressure
-# alone (cabin) and both at 1 g (cruise). On 2 ranks: each outer box, which the pressure does not
-# load, is held by the side-of-body fasteners alone: they balance its tip load in flight and cruise,
-# and balance each other in cabin; flight is the scene without pressure (1 rank's tiny run, 1e-8).
+# own load, and the scene runs five load cases on one set-up: the wing's path (flight), the pressure
+# alone (cabin), both at 1 g (cruise), and the pressure brought on (pressurise) then held while the
+# wing goes through its path (pressurised-flight). On 2 ranks: each outer box, which the pressure
+# does not load, is held by the side-of-body fasteners alone: they balance its tip load in flight,
+# cruise and pressurised-flight, and balance each other in cabin and pressurise; flight is the scene
+# without pressure (1 rank's tiny run, 1e-8). With every fastener a linear spring, the held pressure
+# against superposition: pressurised-flight at each step is flight plus pressurise's end (1e-8),
+# condensed, on 1 rank.
 add_test(NAME wing_make_tiny_cabin COMMAND ${_wfgen} ${_wf} tinyp --size tiny --load-steps 2 --cabin-pressure 0.0576)
 set_tests_properties(wing_make_tiny_cabin PROPERTIES FIXTURES_SETUP wing_tiny_cabin_scene)
 boltnet_run(wing_tiny_cabin 2 ${_wf}/tinyp.yaml ${_exact})
 set_tests_properties(run_wing_tiny_cabin_np2 PROPERTIES FIXTURES_REQUIRED wing_tiny_cabin_scene)
-foreach(case flight cruise cabin)
+foreach(case flight cruise cabin pressurise pressurised-flight)
   set(_tip "")
-  if(case STREQUAL cabin)
+  if(case STREQUAL cabin OR case STREQUAL pressurise)
     set(_tip --no-tip-load)
   endif()
   add_test(NAME wing_tiny_cabin_${case}_equilibrium
@@ -194,6 +198,12 @@ endforeach()
 add_test(NAME wing_tiny_cabin_flight_as_without
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_tiny_np1/joints.csv ${BOLTNET_OUT}/wing_tiny_cabin_np2/flight/joints.csv 1e-8)
 set_tests_properties(wing_tiny_cabin_flight_as_without PROPERTIES FIXTURES_REQUIRED "wing_tiny_np1;wing_tiny_cabin_np2")
+boltnet_run(wing_tiny_cabin_linear 1 ${_wf}/tinyp.yaml -options_file ${_wf}/tinyp.linear.opts -load_cases flight,pressurise,pressurised-flight -output_fields false)
+set_tests_properties(run_wing_tiny_cabin_linear_np1 PROPERTIES FIXTURES_REQUIRED wing_tiny_cabin_scene)
+add_test(NAME wing_tiny_cabin_held_superposition
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_superposition.py ${BOLTNET_OUT}/wing_tiny_cabin_linear_np1/pressurised-flight/joints.csv
+          ${BOLTNET_OUT}/wing_tiny_cabin_linear_np1/flight/joints.csv ${BOLTNET_OUT}/wing_tiny_cabin_linear_np1/pressurise/joints.csv 1e-8)
+set_tests_properties(wing_tiny_cabin_held_superposition PROPERTIES FIXTURES_REQUIRED wing_tiny_cabin_linear_np1)
 
 # The tip load through a rigid patch (--tip-load rigid): a 6-dof node at the tip section's centre
 # tied to each part's whole tip section (fastener table column `footprint`), loaded with the beam

@@ -23,9 +23,9 @@
 - Cabin pressure (optional): a pressure on the fuselage skin (the surface group "skin", its
   elements facing outward), the pressurised cabin's differential pressure. Its own load: the wing's
   rows are the load `wing`, the pressure's `cabin`, and the scene runs them as load cases
-  (scene.write): the wing's load path alone, the pressure alone (up and down), and both at 1 g.
-  One load factor scales every row of a case, so a held pressure under a cycling wing load is not
-  expressible; the cases say what each does.
+  (scene.write): the wing's load path alone, the pressure alone (up and down), both at 1 g, and
+  the wing's load path with the pressure brought on first and held (a case that continues
+  another, docs/scenes.md "Held loads").
 """
 import numpy as np
 

@@ -140,12 +140,16 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model, rigi
         f.write(f"load:\n  path: table\n  table: {','.join(_num(v) for v in a.load_table)}   # load factors (g); forces in the bcs table are the 1 g loads\n"
                 f"  steps: {a.load_steps}\n")
         if a.cabin_pressure > 0:
-            # One load factor scales every row of a case (docs/scenes.md, "Load cases"): the wing's
-            # path alone, the pressure alone, and both together up to 1 g.
-            f.write("  cases: [flight, cabin, cruise]\n  case:\n"
+            # The wing's path alone, the pressure alone, both together up to 1 g, and the wing's
+            # path with the cabin pressurised first and the pressure held (docs/scenes.md, "Load
+            # cases", "Held loads").
+            f.write("  cases: [flight, cabin, cruise, pressurise, pressurised-flight]\n  case:\n"
                     "    flight:   # the wing's load path, unpressurised\n      loads: wing\n"
                     "    cabin:    # the cabin pressurised and let down, no wing load\n      loads: cabin\n      table: 1,0\n"
-                    "    cruise:   # 1 g with the cabin pressurised, both applied together\n      loads: wing,cabin\n      table: 1\n")
+                    "    cruise:   # 1 g with the cabin pressurised, both applied together\n      loads: wing,cabin\n      table: 1\n"
+                    "    pressurise:   # the cabin pressurised, no wing load ...\n      loads: cabin\n      table: 1\n"
+                    "    pressurised-flight:   # ... then held while the wing goes through its load path\n"
+                    "      loads: wing\n      continues: pressurise\n")
         f.write(f"output:\n  bypass_width: {_num(bypass_width(fasteners))}   # the skin splices' pitch along a row: each fastener's "
                 f"bypass load is its strip's (docs/output.md, \"Bypass\")\n")
     with open(base + ".model.json", "w") as f:
