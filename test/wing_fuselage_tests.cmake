@@ -210,3 +210,10 @@ set_tests_properties(wing_tiny_cabin_held_superposition PROPERTIES FIXTURES_REQU
 # loads' resultant. With the rigid patch in the free body, each outer box is again held by the
 # side-of-body fasteners alone, which balance the tip load at every step, on 1 and 2 ranks.
 wing_tiny_balanced(tinyr --tip-load rigid)
+# The ties carry the whole tip load; the most loaded joint the run reports is a fastener's
+# (check_most_loaded.py recomputes it from joints.csv without the ties).
+foreach(ranks 1 2)
+  add_test(NAME wing_tinyr_most_loaded_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_most_loaded.py ${BOLTNET_OUT}/wing_tinyr_np${ranks} ${_wf}/tinyr.joints.csv)
+  set_tests_properties(wing_tinyr_most_loaded_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tinyr_scene;wing_tinyr_np${ranks}")
+endforeach()

@@ -79,16 +79,20 @@ std::string Why(const std::string &path)
 
 // The most loaded joint of the step (largest in-plane force, the smallest id among equals) from each
 // rank's own records, kept when it is more loaded than every earlier step's: two reductions, no
-// gather.
+// gather. Ties are left out: they carry whole loads into parts (a rigid patch's), and the question
+// is which fastener is most loaded. mine[k] is the record of the k-th local joint.
 PetscErrorCode MostLoaded(BoltnetAssembly a, const StepInfo &info, const std::vector<JointRecord> &mine, Output *out)
 {
   PetscReal most = -1, gmost;
   PetscInt  joint = PETSC_MAX_INT, gjoint;
   PetscFunctionBeginUser;
-  for (const JointRecord &r : mine) most = std::max(most, std::hypot(r.force[1], r.force[2]));
+  PetscCheck(mine.size() == a->joints.size(), PETSC_COMM_SELF, PETSC_ERR_PLIB, "%zu joint records for %zu local joints", mine.size(), a->joints.size());
+  auto counts = [&](size_t k) { return !a->joints.comp[k].tie; };
+  for (size_t k = 0; k < mine.size(); ++k)
+    if (counts(k)) most = std::max(most, std::hypot(mine[k].force[1], mine[k].force[2]));
   PetscCall(MPIU_Allreduce(&most, &gmost, 1, MPIU_REAL, MPIU_MAX, a->comm));
-  for (const JointRecord &r : mine)
-    if (std::hypot(r.force[1], r.force[2]) == gmost) joint = std::min(joint, r.joint);
+  for (size_t k = 0; k < mine.size(); ++k)
+    if (counts(k) && std::hypot(mine[k].force[1], mine[k].force[2]) == gmost) joint = std::min(joint, mine[k].joint);
   PetscCall(MPIU_Allreduce(&joint, &gjoint, 1, MPIU_INT, MPI_MIN, a->comm));
   if (gjoint != PETSC_MAX_INT && gmost > out->most_force) {
     out->most_force = gmost;

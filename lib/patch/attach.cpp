@@ -143,6 +143,7 @@ JointComp MakeJointComp(const Model &m, const LayoutOptions &o, const JointDesc 
   for (int k = 0; k < 3; ++k) j.x[k] = d.x[k];
   for (int k = 0; k < 9; ++k) j.R[k] = d.R[k];
   j.params = d.params;
+  j.tie    = d.footprint[0] != '\0';
   j.va = j.vb = -1; // a side on a part another rank holds: filled in ShareLayout
   for (int side = 0; side < 2; ++side) {
     const PetscInt  pos  = m.Find(side ? d.part_b : d.part_a);

@@ -43,6 +43,10 @@ struct JointComp {
   PetscReal pa[3], pb[3];
   PetscReal R[9];
   Params    params;
+  // 1 when its footprint is a node set the user named (JointDesc::footprint): a tie, an RBE2-like
+  // modelling device that carries a load into a part (docs/scenes.md, "Ties"), not a fastener. The
+  // most loaded joint of the output leaves ties out.
+  PetscInt tie;
 };
 
 // Edge component of a seam; the seam's elements are in the layout's `seams`.
