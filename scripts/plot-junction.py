@@ -7,8 +7,9 @@ reads RESULTS_DIR/{joints.csv (or the joint table joints.h5),summary.json,fields
 NAME.model.json), and writes into OUT_DIR:
 
 - load-transfer.png: the load of each fastener (signed: spanwise on the skin splices, vertical
-  on the spar splices, around the fuselage on the lap) along each row of the side-of-body splices
-  (upper and lower skins, spars, fuselage lap) at each load level: the classic chart where the end
+  on the spar splices and the spar frames, around the fuselage on the lap) along each row of the
+  side-of-body splices (upper and lower skins, spars, fuselage lap, spar frames) at each load
+  level: the classic chart where the end
   fasteners of a row carry most; with --compare, the same model with every fastener a linear spring
   (a run with NAME.linear.opts at load factor 1, scaled to each level) as dashed lines;
 - row-share.png: the share of a splice side's load carried by each row (the multi-row joint's
@@ -46,7 +47,7 @@ except ImportError as e:
 STATE = {"stick": ("tab:blue", "stick"), "slide": ("tab:red", "slide"), "contact": ("tab:green", "bearing"),
          "linear": ("tab:gray", "linear"), "open": ("tab:orange", "open")}
 SPLICES = ["upper_outer", "upper_centre", "lower_outer", "lower_centre", "front_spar_outer", "front_spar_centre",
-           "rear_spar_outer", "rear_spar_centre", "fuselage_lap"]
+           "rear_spar_outer", "rear_spar_centre", "fuselage_lap", "front_frame", "rear_frame"]
 
 
 def table_rows(path):
@@ -113,7 +114,7 @@ def force(r):
 
 def main_load(splice, r):
     """The load a splice transfers, signed: along the span (t1) for the skin splices, vertical (t2 =
-    n x t1 = z) for the spar splices, around the fuselage (t2) for the lap."""
+    n x t1 = z) for the spar splices and the spar frames, around the fuselage (t2) for the lap."""
     return float(r["f_t1"] if splice.startswith(("upper", "lower")) else r["f_t2"])
 
 
@@ -121,7 +122,7 @@ LABEL = {"skin": "spanwise load f_t1 (kN)", "spar": "vertical load f_t2 (kN)", "
 
 
 def label(splice):
-    return LABEL["spar" if "spar" in splice else "lap" if splice == "fuselage_lap" else "skin"]
+    return LABEL["spar" if "spar" in splice or "frame" in splice else "lap" if splice == "fuselage_lap" else "skin"]
 
 
 def level_steps(steps, levels):
@@ -257,7 +258,7 @@ def main():
                 if lin:
                     ax.plot(pos, [lv * lin[j][0] / 1000 for j in jr], color=lcol[lv], ls="--", lw=0.8)
         ax.set_title(sp.replace("_", " "), fontsize=9)
-        ax.set_xlabel("z (mm)" if "spar" in sp else "x along the chord (mm)", fontsize=8)
+        ax.set_xlabel("z (mm)" if "spar" in sp or "frame" in sp else "x along the chord (mm)", fontsize=8)
         ax.set_ylabel(label(sp), fontsize=8)
         ax.tick_params(labelsize=7)
     for ax in list(axes.flat)[len(splices):]:
@@ -292,7 +293,7 @@ def main():
     # State maps: skin splices in the (x, y) plane, spar splices in (y, z), the lap in (x, arc).
     views = [("upper skin splice", lambda m: m["splice"].startswith("upper"), 0, 1),
              ("lower skin splice", lambda m: m["splice"].startswith("lower"), 0, 1),
-             ("spar splices", lambda m: "spar" in m["splice"], 1, 2),
+             ("spar splices and frames", lambda m: "spar" in m["splice"] or "frame" in m["splice"], 1, 2),
              ("fuselage lap", lambda m: m["splice"] == "fuselage_lap", 0, 2)]
     table = {int(r["id"]): r for r in csv.DictReader(open(base + ".joints.csv"))}
     fig, axes = plt.subplots(len(views), len(at), figsize=(3.6 * len(at), 2.4 * len(views)), squeeze=False)

@@ -28,7 +28,12 @@ With --no-tip-load (the cabin pressure's load case, which loads the fuselage ski
 load is zero: the box's fasteners must then balance each other, to RTOL of the sum of their forces'
 magnitudes.
 
-usage: check_junction_equilibrium.py RESULTS_DIR SCENE.yaml [RTOL] [--no-tip-load]
+With --whole-box (a scene of both wings, --both-sides) the free body is instead every part but the
+fuselage, with both wings' tip loads (their resultants moved to one point): the wing boxes, their
+splices and the centre box, held by the fuselage alone, through the lap on the tee's stem and the
+spar frames' fasteners. (A half model's centre box is also held by its symmetry plane.)
+
+usage: check_junction_equilibrium.py RESULTS_DIR SCENE.yaml [RTOL] [--no-tip-load] [--whole-box]
 """
 import csv
 import json
@@ -54,8 +59,9 @@ def joint_rows(res):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a != "--no-tip-load"]
-    tip = 0.0 if len(args) < len(sys.argv) - 1 else 1.0
+    tip = 0.0 if "--no-tip-load" in sys.argv else 1.0
+    whole = "--whole-box" in sys.argv
+    args = [a for a in sys.argv[1:] if a not in ("--no-tip-load", "--whole-box")]
     res, scene = args[0], args[1]
     rtol = float(args[2]) if len(args) > 2 else 1e-6
     base = scene[:-5]
@@ -77,11 +83,22 @@ def main():
     qpart = h5["shells/part"][:, 0]
     cent = X[Q].mean(axis=1)
 
-    def footprint_node(part, x):
-        """A node of the element of `part` that holds the fastener at x (nearest centroid)."""
+    def footprint_node(part, x, n):
+        """The nodes of the element of `part` that holds the fastener at x, as boltnet finds it
+        (lib/mesh/search.cpp): among the elements that contain x seen along the axis n, the nearest
+        along it. (A fastener at an element's centre is also nearest its centroid; one off-centre,
+        such as a spar frame's on the web, need not be.)"""
         idx = np.flatnonzero(qpart == part)
-        e = idx[np.argmin(np.linalg.norm(cent[idx] - x, axis=1))]
-        return Q[e]
+        e1 = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
+        e1 /= np.linalg.norm(e1)
+        e2 = np.cross(n, e1)
+        c = np.stack([(X[Q[idx]] - x) @ e1, (X[Q[idx]] - x) @ e2], axis=-1)   # (k, 4, 2), x at the origin
+        cr = c[:, :, 0] * np.roll(c[:, :, 1], -1, axis=1) - c[:, :, 1] * np.roll(c[:, :, 0], -1, axis=1)
+        inside = ~((cr > 1e-12).any(axis=1) & (cr < -1e-12).any(axis=1))
+        if not inside.any():
+            sys.exit(f"no element of part {part} holds the fastener at {x}")
+        cand = idx[inside]
+        return Q[cand[np.argmin(np.abs((cent[cand] - x) @ n))]]
 
     frames, nodes = {}, {}
     for j, r in table.items():
@@ -93,17 +110,27 @@ def main():
         x = np.array([float(r[k]) for k in ("x", "y", "z")])
         frames[j] = (n, t1, np.cross(n, t1), x)
         if r["type"] != "tie":   # a tie joins a rigid patch to the box: inside the free body, never read
-            nodes[j] = (footprint_node(int(r["patch_a"]), x), footprint_node(int(r["patch_b"]), x))
+            nodes[j] = (footprint_node(int(r["patch_a"]), x, n), footprint_node(int(r["patch_b"]), x, n))
     steps = {}
     for r in joint_rows(res):
         steps.setdefault(int(r["step"]), []).append(r)
     worst = 0.0
+    bodies = []
     for wing in model["wings"]:
         # With --tip-load rigid the rigid patch that carries the tip load belongs to the free body: its
         # ties to the box are internal, the load on it external.
         box = {pid[p] for p in wing["parts"]} | ({model["rigid_patches"][wing["rigid"]]} if "rigid" in wing else set())
-        O = np.array(wing["origin"])
-        Ft, Mt = tip * np.array(wing["force"]), tip * np.array(wing["moment"])
+        bodies.append((wing["side"] + " wing", box, np.array(wing["origin"]), np.array(wing["force"]), np.array(wing["moment"])))
+    if whole:
+        if not model["both_sides"]:
+            sys.exit("--whole-box needs a scene of both wings: a half model's centre box is also held by its symmetry plane")
+        O = np.zeros(3)
+        box = set(pid.values()) - {pid["fuselage"]} | set(model.get("rigid_patches", {}).values())
+        Ft = sum(F for _, _, _, F, _ in bodies)
+        Mt = sum(M + np.cross(Ow - O, F) for _, _, Ow, F, M in bodies)
+        bodies = [("whole wing box (every part but the fuselage)", box, O, Ft, Mt)]
+    for name, box, O, Ft, Mt in bodies:
+        Ft, Mt = tip * Ft, tip * Mt
         for step, rows in sorted(steps.items()):
             lam = float(rows[0]["load"])
             rot = h5[f"steps/{step:06d}/shells/rotation"][:]
@@ -136,14 +163,14 @@ def main():
                 ef, em = np.linalg.norm(F) / max(fsum, 1e-300), np.linalg.norm(M) / max(msum, 1e-300)
             worst = max(worst, ef, em)
             if ef > rtol or em > rtol:
-                print(f"{wing['side']} wing, step {step} (load {lam:g}): joints apply F {F} and M {M}; the tip load is "
+                print(f"{name}, step {step} (load {lam:g}): joints apply F {F} and M {M}; the tip load is "
                       f"{-lam * Ft} and {-lam * Mt}: relative error {ef:.2e} (force), {em:.2e} (moment) > {rtol:g}")
                 return 1
         if tip:
-            print(f"{wing['side']} wing: the side-of-body fasteners balance the tip load (V {Ft[2]:.6g} N, moment {np.linalg.norm(Mt):.6g} N mm "
+            print(f"{name}: the fasteners that hold it balance the tip load (V {Ft[2]:.6g} N, moment {np.linalg.norm(Mt):.6g} N mm "
                   f"per g) at {len(steps)} steps")
         else:
-            print(f"{wing['side']} wing: no tip load; the side-of-body fasteners balance each other at {len(steps)} steps")
+            print(f"{name}: no tip load; the fasteners that hold it balance each other at {len(steps)} steps")
     print(f"worst relative error {worst:.2e} (rtol {rtol:g})")
     return 0
 

@@ -95,6 +95,11 @@ set_tests_properties(wing_tiny_symmetry PROPERTIES FIXTURES_REQUIRED "wing_tiny_
 add_test(NAME wing_tiny_both_equilibrium
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_both_linear_np2 ${_wf}/tiny-both.yaml 1e-6)
 set_tests_properties(wing_tiny_both_equilibrium PROPERTIES FIXTURES_REQUIRED "wing_tiny_both_scene;wing_tiny_both_linear_np2")
+# Every part but the fuselage as one free body: both wings' tip loads against what holds the wing box,
+# the lap on the tee's stems and the spar frames' fasteners alone.
+add_test(NAME wing_tiny_both_whole_box_equilibrium
+  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_junction_equilibrium.py ${BOLTNET_OUT}/wing_tiny_both_linear_np2 ${_wf}/tiny-both.yaml 1e-6 --whole-box)
+set_tests_properties(wing_tiny_both_whole_box_equilibrium PROPERTIES FIXTURES_REQUIRED "wing_tiny_both_scene;wing_tiny_both_linear_np2")
 
 # Beam theory (check_junction_beam.py): the small size under a pure bending moment, linear springs,
 # with aluminium outer skins and with carbon-epoxy ones (laminate sections, fasteners identified

@@ -124,7 +124,46 @@ def place(g, both):
             for k, x in enumerate(pick(xf_all, kf)):
                 out.append(Fastener(a="fuselage", b=tee, n=n, t1=(1, 0, 0), x=(x, s * rm * math.cos(th), rm * math.sin(th)),
                                     family="fu", splice="fuselage_lap", side=side, row=r + 1, index=k + 1, pos=x, d=a.d_fuselage))
+        out += spar_frames(g, s, side)
         out += attachments(g, s, t, side)
+    return out
+
+
+def spar_frames(g, s, side):
+    """The fuselage frames at the spars on the centre box's spar webs (--spar-frames fastened): one
+    row along the frame at the middle of its inner element, every other frame element, where the web
+    is clear of its caps (two web elements) and of the spar splice's zone. The frame lies in the web's
+    plane (their 5 mm offset is left out: the row carries shear in that plane), so a fastener joins
+    two sheets at the same x; its footprint is the element holding it on each."""
+    a = g.a
+    if a.spar_frames != "fastened":
+        return []
+    r_in, r_st = g.R - a.frame_depth, g.R - a.stringer_depth
+    rf = (r_in + r_st) / 2 if a.frame_depth > a.stringer_depth + 1e-9 else (r_in + g.R) / 2
+    if g.th_spar_grid is None:
+        return []
+    ys0 = g.y_ci - g.W                                        # the spar splice's zone starts here
+    yn, zn = g.y_centre.nodes(), g.z_web.nodes()
+    clear = lambda y, z: min(abs(yn - y)) > 2 * a.coupling_radius or min(abs(zn - z)) > 2 * a.coupling_radius
+    ok = lambda y, z: g.z_locap + 2 * g.hz < z < g.z_upcap - 2 * g.hz and y < ys0 - 2 * g.hy and clear(y, z)
+    web = lambda y, z: (int(np.searchsorted(yn, y)), int(np.searchsorted(zn, z)))   # the web element holding it
+    # From the top down: at least the pitch apart, two or more frame elements apart, and never in
+    # neighbouring web elements (footprints share no node on either part).
+    ths, last, lastk, used = [], 1e30, -10, []
+    for k, th in enumerate(sorted(g.th_spar_grid.centres(), reverse=True)):
+        y, z = rf * math.cos(th), rf * math.sin(th)
+        w = web(y, z)
+        if (ok(y, z) and k - lastk >= 2 and rf * (last - th) >= a.pitch_spar - 1e-9
+                and all(abs(w[0] - u[0]) > 1 or abs(w[1] - u[1]) > 1 for u in used)):
+            ths.append(th)
+            last, lastk = th, k
+            used.append(w)
+    out = []
+    for x0, spar in ((0.0, "front"), (g.b, "rear")):
+        for k, th in enumerate(ths):
+            z = rf * math.sin(th)
+            out.append(Fastener(a="centre_sub", b="fuselage", n=(1, 0, 0), t1=(0, s, 0), x=(x0, s * rf * math.cos(th), z),
+                                family="ff", splice=f"{spar}_frame", side=side, row=1, index=k + 1, pos=z, d=a.d_spar))
     return out
 
 

@@ -7,7 +7,9 @@ side (s = +1 right, -1 left, its mirror image):
 
 - fuselage: skin (cylinder of radius R), frames (radial webs) and stringers (radial blades), one
   section; the lower lobe is cut out where the wing box passes (x in the cut-out, below the upper
-  skin), and the skin laps on the upper tee's stem along the side of body.
+  skin), and the skin laps on the upper tee's stem along the side of body. The frames at the spars
+  (x = 0 and b) go on inside the cut-out, in the spar webs' planes, down to the lower skin: the spar
+  frames, fastened to the webs (fasteners.spar_frames).
 - centre box and outer box: upper skin, lower skin, substructure (front and rear spar webs with caps
   pointing out of the box, ribs with feet on both skins), the substructure fastened to the skins.
 - the side-of-body joint: the upper tee (a flange under both upper skins, folded up into a stem that
@@ -41,11 +43,14 @@ def fuselage(P, g, s):
     r_in, r_st = R - a.frame_depth, R - a.stringer_depth
     rg = Grid([(r_in, r_st, 1), (r_st, R, 1)]) if a.frame_depth > a.stringer_depth + 1e-9 else Grid([(r_in, R, 1)])
     for xk in g.frames:
-        if cut0 < xk < cut1:   # in the box's chord: above the stem (or above the cut-out at the spars)
-            th0 = g.th_ftop if g.x_s0 - 1e-9 <= xk <= g.x_s1 + 1e-9 else g.th_e
+        if cut0 < xk < cut1 and g.x_s0 - 1e-9 <= xk <= g.x_s1 + 1e-9:   # in the box's chord: above the stem
+            ring = Grid([seg for seg in g.th_fus.segs if seg[0] >= g.th_ftop - 1e-12])
+        elif cut0 < xk < cut1:   # at a spar: above the cut-out's edge, and a spar frame's own grid below it
+            ring = Grid([seg for seg in g.th_fus.segs if seg[0] >= g.th_e - 1e-12])
+            if g.th_spar_grid is not None:
+                ring = g.th_spar_grid + ring
         else:
-            th0 = -math.pi / 2
-        ring = Grid([seg for seg in g.th_fus.segs if seg[0] >= th0 - 1e-12])
+            ring = g.th_fus
         f = mirror(lambda th, r, xk=xk: (xk, r * math.cos(th), r * math.sin(th)), s)
         P.blocks(f, ring, rg, u_centre=lambda r, xk=xk: (xk, 0.0, 0.0))
     for th in g.stringers_lo + g.stringers_up:
