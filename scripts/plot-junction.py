@@ -9,9 +9,9 @@ NAME.model.json), and writes into OUT_DIR:
 - load-transfer.png: the load of each fastener (signed: spanwise on the skin splices, vertical
   on the spar splices and the spar frames, around the fuselage on the lap) along each row of the
   side-of-body splices (upper and lower skins, spars, fuselage lap, spar frames) at each load
-  level: the classic chart where the end
-  fasteners of a row carry most; with --compare, the same model with every fastener a linear spring
-  (a run with NAME.linear.opts at load factor 1, scaled to each level) as dashed lines;
+  level: the classic chart where the end fasteners of a row carry most; with --compare, the same
+  model with every fastener a linear spring (a run with NAME.linear.opts at load factor 1, scaled
+  to each level) as dashed lines;
 - row-share.png: the share of a splice side's load carried by each row (the multi-row joint's
   load transfer), at each load level, with the linear model;
 - states.png: maps of the joint states (stick, slide, bearing) over the junction at each level;
