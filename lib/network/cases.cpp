@@ -10,6 +10,34 @@
 
 namespace boltnet {
 
+namespace {
+
+// The record of a load path back to its start at load factor 0: the steps, cut-backs and solves
+// counted again, no secant predictor and no stuck-joint prediction (both come from the last path's
+// increments). The state (solution, joint histories, factorisation) is the caller's to keep or reset.
+void RestartPath(BoltnetAssembly a)
+{
+  a->lambda = a->lambda_target = a->lambda_prev = 0;
+  a->path                      = PathPosition{};
+  a->resume                    = PETSC_FALSE;
+  a->steps.clear();
+  a->total_cutbacks = 0;
+  a->failure.clear();
+  a->checks.singular.clear();
+  a->has_prev              = PETSC_FALSE;
+  a->isolve.factorisations = a->isolve.krylov_its = a->isolve.linear_solves = a->isolve.kept = 0;
+  JointSet &js             = a->joints;
+  js.state_trace.clear();
+  js.frozen.clear();
+  js.util_now.clear();
+  js.util_before.clear();
+  js.last_increment = 0;
+  js.util_ready     = PETSC_FALSE;
+  js.jac_assembled = js.jac_reused = js.frozen_joint_steps = js.joint_steps = js.released = 0;
+}
+
+} // namespace
+
 PetscErrorCode AssemblyReset(BoltnetAssembly a)
 {
   PetscFunctionBeginUser;
@@ -21,30 +49,15 @@ PetscErrorCode AssemblyReset(BoltnetAssembly a)
     op.cond.w0_held.clear();
     op.cond.prescribed_held.clear();
   }
-  a->lambda = a->lambda_target = 0;
-  a->path                      = PathPosition{};
-  a->resume                    = PETSC_FALSE;
-  a->steps.clear();
-  a->total_cutbacks   = 0;
-  a->failure.clear();
-  a->checks.singular.clear();
+  RestartPath(a);
   a->checks.force_scale_seen = 0;
-  a->has_prev         = PETSC_FALSE; // no secant predictor from the last case's path
-  a->isolve.factorisations = a->isolve.krylov_its = a->isolve.linear_solves = a->isolve.kept = 0;
-  a->isolve.keep_it = -1;
-  a->isolve.factors_valid = PETSC_FALSE;
-  JointSet &js  = a->joints;
+  a->isolve.keep_it          = -1;
+  a->isolve.factors_valid    = PETSC_FALSE;
+  JointSet &js               = a->joints;
   js.committed.assign(js.size(), History{}); // every joint back to its initial history
   js.accepted.clear();
   js.accepted_jump.clear();
-  js.state_trace.clear();
-  js.frozen.clear();
-  js.util_now.clear();
-  js.util_before.clear();
-  js.last_increment = 0;
-  js.util_ready     = PETSC_FALSE;
-  js.jac_valid      = PETSC_FALSE; // its joint tangents are the last case's
-  js.jac_assembled = js.jac_reused = js.frozen_joint_steps = js.joint_steps = js.released = 0;
+  js.jac_valid = PETSC_FALSE; // its joint tangents are the last case's
   // A fresh factorisation for the first Jacobian, as in a run of its own (a case that failed may
   // leave MUMPS in an error state).
   PetscCall(AssemblyResetPC(a));
@@ -83,26 +96,8 @@ PetscErrorCode AssemblyHoldLoads(BoltnetAssembly a)
     for (const auto &[d, v] : cp.prescribed) cp.prescribed_held[d] += l * v;
   }
   // The path starts again from load factor 0 at the state reached: the solution and every joint's
-  // history stay, and so does the factorisation (the tangent has not changed); the record of steps
-  // and solves starts again, and neither the secant predictor nor the stuck joints' prediction
-  // carries over (the last increments were of other loads).
-  a->lambda = a->lambda_target = a->lambda_prev = 0;
-  a->path                      = PathPosition{};
-  a->resume                    = PETSC_FALSE;
-  a->steps.clear();
-  a->total_cutbacks = 0;
-  a->failure.clear();
-  a->checks.singular.clear();
-  a->has_prev              = PETSC_FALSE;
-  a->isolve.factorisations = a->isolve.krylov_its = a->isolve.linear_solves = a->isolve.kept = 0;
-  JointSet &js             = a->joints;
-  js.state_trace.clear();
-  js.frozen.clear();
-  js.util_now.clear();
-  js.util_before.clear();
-  js.last_increment = 0;
-  js.util_ready     = PETSC_FALSE;
-  js.jac_assembled = js.jac_reused = js.frozen_joint_steps = js.joint_steps = js.released = 0;
+  // history stay, and so does the factorisation (the tangent has not changed).
+  RestartPath(a);
   PetscFunctionReturn(0);
 }
 
