@@ -92,3 +92,23 @@ boltnet_expect(bad_tie_no_set 2 ${_bad} --match "Joint 0: its footprint is node 
   -- ${_tie} -scene_joints ${BOLTNET_TEST_SCENES}/tie-noset.joints.csv)
 boltnet_expect(bad_tie_node_coupling 2 ${_bad} --match "Joint 0: its footprint is node set 'xmax', which needs -coupling_type exact or penalty"
   -- ${_tie} -scene_joints ${BOLTNET_TEST_SCENES}/strip-tie.joints.csv -coupling_type node)
+
+# A joint's own gap and pretension (the fastener table's columns `gap` and `pretension`,
+# docs/scenes.md "Per-joint parameters"): fig3c's joint with 0.03 mm and 8 kN in place of its
+# type's 0.05 mm and 10 kN follows fig3c's closed form with j = 0.03 mm and G = mu nf Pc = 2400 N,
+# through stick, slide and bearing both ways, on 1 and 2 ranks (with the type's values the same
+# check fails at the first slide). A negative gap, a gap on a linear spring and a pretension on the
+# contact law are refused, naming the file, line and column.
+foreach(ranks 1 2)
+  boltnet_run(fig3c_own_gap ${ranks} ${BOLTNET_SCENES}/fig3c.yaml -scene_joints ${BOLTNET_TEST_SCENES}/fig3c-gap.joints.csv)
+  add_test(NAME fig3c_own_gap_closed_form_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${BOLTNET_OUT}/fig3c_own_gap_np${ranks}/joints.csv 1.5e5 5000 4e4 0.03 2400)
+  set_tests_properties(fig3c_own_gap_closed_form_np${ranks} PROPERTIES FIXTURES_REQUIRED fig3c_own_gap_np${ranks})
+endforeach()
+set(_own $<TARGET_FILE:boltnet_driver> -output_dir ${BOLTNET_OUT}/bad -scene ${BOLTNET_SCENES}/fig3c.yaml)
+boltnet_expect(bad_joint_gap 1 ${_bad} --max-lines 1 --match "fig3c-gap-bad.joints.csv line 3, column 'gap': -0.01 must be a finite number >= 0"
+  -- ${_own} -scene_joints ${BOLTNET_TEST_SCENES}/fig3c-gap-bad.joints.csv)
+boltnet_expect(bad_joint_gap_spring 1 ${_bad} --max-lines 1 --match "fig3c-gap.joints.csv line 4, column 'gap': joint 0's type 'bolt' is a linear spring, which has no gap"
+  -- ${_own} -scene_joints ${BOLTNET_TEST_SCENES}/fig3c-gap.joints.csv -joint_bolt_law spring)
+boltnet_expect(bad_joint_pretension_contact 1 ${_bad} --max-lines 1 --match "column 'pretension': joint 0's type 'bolt' is not of the frictional law"
+  -- ${_own} -scene_joints ${BOLTNET_TEST_SCENES}/fig3c-gap.joints.csv -joint_bolt_law contact)

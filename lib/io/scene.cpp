@@ -296,7 +296,27 @@ struct FastenerRow {
   bool      positioned;
   size_t    type;
   std::string footprint; // a node set named as the footprint (column `footprint`; empty: found)
+  int         line;      // in the table, for messages
+  // This joint's own clearance and clamp force (columns `gap`, mm, and `pretension`, N), in place
+  // of its type's; an empty cell or no column: the type's.
+  bool      has_gap = false, has_pretension = false;
+  PetscReal gap = 0, pretension = 0;
 };
+
+// An optional cell of a number >= 0: no column or an empty cell leave *given false.
+PetscErrorCode OptionalCell(MPI_Comm comm, const Table &t, size_t row, const std::string &col, const char *what, PetscReal *x, bool *given)
+{
+  std::string text;
+  PetscFunctionBeginUser;
+  *given = false;
+  if (!HasColumn(t, col)) PetscFunctionReturn(0);
+  PetscCall(Cell(comm, t, row, col, &text));
+  if (text.find_first_not_of(" \t") == std::string::npos) PetscFunctionReturn(0);
+  PetscCall(RealCell(comm, t, row, col, x));
+  PetscCheck(std::isfinite(*x) && *x >= 0, comm, PETSC_ERR_USER_INPUT, "%s line %d, column '%s': %g must be a finite number >= 0 (%s)", t.path.c_str(), t.lines[row], col.c_str(), (double)*x, what);
+  *given = true;
+  PetscFunctionReturn(0);
+}
 
 // The rows of the fastener table, and its joint types with the first joint of each, in the order of
 // first use.
@@ -321,6 +341,9 @@ PetscErrorCode FastenerRows(MPI_Comm comm, const Table &joints, std::vector<Fast
     for (int k = 0; k < 3 && f.positioned; ++k) PetscCall(RealCell(comm, joints, r, xc[k], &f.pos[k]));
     if (HasColumn(joints, "footprint")) PetscCall(Cell(comm, joints, r, "footprint", &f.footprint));
     PetscCheck(f.footprint.empty() || f.positioned, comm, PETSC_ERR_USER_INPUT, "%s line %d: a joint with a footprint set needs its position (columns x, y, z): the set's nodes follow the joint node there", joints.path.c_str(), joints.lines[r]);
+    f.line = joints.lines[r];
+    PetscCall(OptionalCell(comm, joints, r, "gap", "mm: this joint's clearance, in place of its type's gap", &f.gap, &f.has_gap));
+    PetscCall(OptionalCell(comm, joints, r, "pretension", "N: this joint's clamp force, in place of its type's pretension", &f.pretension, &f.has_pretension));
     auto it = seen.find(type);
     if (it == seen.end()) {
       it = seen.emplace(type, firsts->size()).first;
@@ -437,7 +460,7 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscOptionsBegin(comm, nullptr, "boltnet scene", "boltnet");
   PetscCall(PetscOptionsString("-scene_name", "Scene name (results go to results/<name>/ by default)", "", name, name, sizeof(name), nullptr));
   PetscCall(PetscOptionsString("-scene_patches", "CSV table of patches: id,kind,x,y,z[,lx,ly,nx,ny,elements,mesh,part,material] (kind rigid, plate or gmsh; elements quad, tri or mixed)", "", fp, fp, sizeof(fp), nullptr));
-  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z,footprint] (n bolt axis, t1 first in-plane direction, x position; footprint: a node set that follows the joint rigidly instead of -coupling_radius's)", "", fj, fj, sizeof(fj), nullptr));
+  PetscCall(PetscOptionsString("-scene_joints", "CSV fastener table: id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z[,x,y,z,footprint,gap,pretension] (n bolt axis, t1 first in-plane direction, x position; footprint: a node set that follows the joint rigidly instead of -coupling_radius's; gap, pretension: this joint's, in place of its type's)", "", fj, fj, sizeof(fj), nullptr));
   PetscCall(PetscOptionsString("-scene_bcs", "CSV boundary conditions: patch,dof,kind,value[,set,load] (dof ux..rz or all; kind fixed, displacement, force or pressure; value per unit load factor, mm, N or MPa; set: a shell patch's node set (a pressure loads the elements within it); load: the load it belongs to, for -load_cases)", "", fb, fb, sizeof(fb), nullptr));
   PetscOptionsEnd();
   scene->name = name;
@@ -559,7 +582,15 @@ static PetscErrorCode SceneDescribeAssemblyImpl(MPI_Comm comm, Scene *scene, Bol
   PetscCall(Collective(comm, "reading the scene", [&]() -> PetscErrorCode {
     PetscFunctionBeginUser;
     for (const FastenerRow &f : rows) {
-      PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &types[f.type], f.n, f.t, f.positioned ? f.pos : nullptr));
+      // A joint's own gap and pretension in place of its type's (docs/scenes.md, "Per-joint
+      // parameters"); the law's checks (an offset inside the gap) then see the joint's values.
+      BoltnetJointParams p = types[f.type];
+      const char        *type = firsts[f.type].first.c_str();
+      PetscCheck(!f.has_gap || p.law != BOLTNET_LAW_SPRING, comm, PETSC_ERR_USER_INPUT, "%s line %d, column 'gap': joint %" PetscInt_FMT "'s type '%s' is a linear spring, which has no gap", joints.path.c_str(), f.line, f.id, type);
+      PetscCheck(!f.has_pretension || p.law == BOLTNET_LAW_FRICTION, comm, PETSC_ERR_USER_INPUT, "%s line %d, column 'pretension': joint %" PetscInt_FMT "'s type '%s' is not of the frictional law, the only one with a pretension", joints.path.c_str(), f.line, f.id, type);
+      if (f.has_gap) p.gap = f.gap;
+      if (f.has_pretension) p.pretension = f.pretension;
+      PetscCall(BoltnetAssemblyAddJointAt(a, f.id, f.pa, f.pb, &p, f.n, f.t, f.positioned ? f.pos : nullptr));
       if (!f.footprint.empty()) PetscCall(AssemblySetJointFootprint(a, f.id, f.footprint.c_str()));
     }
     PetscFunctionReturn(0);
