@@ -318,6 +318,8 @@ def main():
 
     # Most loaded fastener per row, margins to slip and to bearing.
     types = summary.get("identified_joint_types", {})
+    # A fastener's own gap (the fastener table's column gap: a clearance per fastener) over its type's.
+    own_gap = {int(r["id"]): float(r["gap"]) for r in csv.DictReader(open(base + ".joints.csv")) if (r.get("gap") or "").strip()}
     out = []
     for sp in splices:
         js = [j for j, m in right.items() if m["splice"] == sp]
@@ -326,7 +328,7 @@ def main():
             F, s, j = best
             r = steps[s][j]
             p = types.get(right[j]["type"], {})
-            G, gap = p.get("G", float("nan")), p.get("gap", float("nan"))
+            G, gap = p.get("G", float("nan")), own_gap.get(j, p.get("gap", float("nan")))
             w = math.hypot(float(r["slip_t1"]), float(r["slip_t2"]))
             out.append(dict(splice=sp, row=row, joint=j, index=int(right[j]["index"]), position=float(right[j]["position"]),
                             load=float(r["load"]), force=F, G=G, slip_margin=1 - F / G if G > 0 else float("nan"),

@@ -27,6 +27,13 @@ endfunction()
 
 # The frictional scene along its load path (1 g, 2.5 g, -1 g, 0; two steps per segment).
 wing_tiny_balanced(tiny)
+# Each fastener's own drawn clearance (the fastener table's column gap) is the one its law used: it
+# bears exactly when its slip exceeds that gap, at every step (check_own_gaps.py), on 1 and 2 ranks.
+foreach(ranks 1 2)
+  add_test(NAME wing_tiny_own_gaps_np${ranks}
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_own_gaps.py ${BOLTNET_OUT}/wing_tiny_np${ranks} ${_wf}/tiny.joints.csv)
+  set_tests_properties(wing_tiny_own_gaps_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np${ranks}")
+endforeach()
 # The bypass strip's width comes from the scene's output: section (the skin splices' pitch along a
 # row), read after the scene's options, and the command line still wins (check_junction_bypass.py).
 add_test(NAME wing_tiny_bypass_width

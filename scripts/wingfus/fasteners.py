@@ -7,9 +7,10 @@ fastener is then exactly that element on each part (docs/coupling.md, "Footprint
 and fasteners two or more elements apart have disjoint footprints.
 
 Junction fasteners (the side-of-body joint) are frictional joint types identified from the geometry at
-start-up (`from: geometry`, docs/identify.md). boltnet's fastener table has no per-joint parameters, so
-the clearance of each fastener, drawn from a tolerance band with a seed, is binned into a few joint
-types per family; the drawn value is kept in the metadata table. The fasteners that attach each box's
+start-up (`from: geometry`, docs/identify.md), one per family; the clearance of each fastener, drawn
+from a tolerance band with a seed, is its own, in the fastener table's column `gap` (or, with
+--clearance-bins N, binned into N joint types per family); the drawn value is also kept in the
+metadata table. The fasteners that attach each box's
 substructure to its skins are linear springs (law spring) with Huth's stiffness: they are not the
 subject of the study and stay stuck far from the joint ("model no more than a scene needs").
 """
@@ -55,7 +56,7 @@ def laminate_modulus(layup, ply, angle_of_load):
 
 
 class Fastener:
-    __slots__ = ("id", "a", "b", "n", "t1", "x", "family", "splice", "side", "row", "index", "pos", "d", "clearance", "type", "elem_a", "elem_b")
+    __slots__ = ("id", "a", "b", "n", "t1", "x", "family", "splice", "side", "row", "index", "pos", "d", "clearance", "gap", "type", "elem_a", "elem_b")
 
     def __init__(self, **kw):
         for k in self.__slots__:
@@ -198,17 +199,26 @@ def attachments(g, s, t, side):
 
 def assign_types(fasteners, a):
     """Junction fasteners: a clearance drawn from [clearance_min, clearance_max] (diametral, mm) with
-    the seed, binned into a.clearance_bins joint types per family (interference fit: one type, no
-    clearance). Attachment fasteners: one linear type per family."""
+    the seed. With a.clearance_bins 0 (the default) each fastener keeps its own: one joint type per
+    family (its hole the band's middle) and the fastener's gap, half its clearance, in the fastener
+    table's column `gap` (docs/scenes.md, "Per-joint parameters"). With N > 0 the clearances are
+    binned into N joint types per family instead, each with its bin's middle. Interference fit: one
+    type, no clearance. Attachment fasteners: one linear type per family. Returns the clearance of
+    each type's hole: the band's middle, or the bins' middles."""
     rng = np.random.default_rng(a.seed)
-    edges = np.linspace(a.clearance_min, a.clearance_max, a.clearance_bins + 1)
+    per_joint = a.clearance_bins == 0
+    edges = np.linspace(a.clearance_min, a.clearance_max, max(1, a.clearance_bins) + 1)
     for f in fasteners:
+        f.gap = None
         if f.family.startswith("a"):
             f.type, f.clearance = f.family, 0.0
         elif a.fit == "interference":
             f.type, f.clearance = f.family + "i", 0.0
         else:
             c = rng.uniform(a.clearance_min, a.clearance_max)
-            k = min(int(np.searchsorted(edges, c, side="right")) - 1, a.clearance_bins - 1)
-            f.type, f.clearance = f"{f.family}{k + 1}", c
-    return [0.5 * (edges[k] + edges[k + 1]) for k in range(a.clearance_bins)]
+            if per_joint:
+                f.type, f.clearance, f.gap = f.family, c, c / 2
+            else:
+                k = min(int(np.searchsorted(edges, c, side="right")) - 1, a.clearance_bins - 1)
+                f.type, f.clearance = f"{f.family}{k + 1}", c
+    return [0.5 * (edges[k] + edges[k + 1]) for k in range(len(edges) - 1)]

@@ -59,7 +59,8 @@ def joint_types(a, fasteners, bin_centres, part_material, mats):
             kn = axial_k(f.d, t1, t2, a.E_fastener)
             types[f.type] = dict(law="spring", kn=kn, kt=k, kr=1e3 * kn * f.d ** 2, d=f.d, t1=t1, t2=t2, E1=E1, E2=E2, huth=kind)
         else:
-            hole = f.d + (0.0 if a.fit == "interference" else bin_centres[int(f.type[len(f.family):]) - 1])
+            suffix = f.type[len(f.family):]   # the bin's number, or "" for a type with per-joint gaps
+            hole = f.d + (0.0 if a.fit == "interference" else bin_centres[int(suffix) - 1 if suffix else 0])
             types[f.type] = dict(law="friction", d=f.d, hole=hole, t1=t1, t2=t2, E1=E1, E2=E2, Ef=a.E_fastener, torque=TORQUE[f.d] * a.torque_factor,
                                  mu=a.mu, huth=kind)
     lines = []
@@ -106,14 +107,16 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model, rigi
         for r, P in rigid:
             f.write(f"{pid[r]},rigid," + ",".join(_num(c) for c in P) + ",,,\n")
     where = dict(rigid)
+    gaps = any(j.gap is not None for j in fasteners)   # each fastener's own clearance (assign_types)
     with open(base + ".joints.csv", "w") as f:
-        f.write("id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z,x,y,z" + (",footprint" if ties else "") + "\n")
+        f.write("id,patch_a,patch_b,type,nx,ny,nz,t1x,t1y,t1z,x,y,z" + (",footprint" if ties else "") + (",gap" if gaps else "") + "\n")
         for j in fasteners:
             v = list(j.n) + list(j.t1) + list(j.x)
-            f.write(f"{j.id},{pid[j.a]},{pid[j.b]},{j.type}," + ",".join(_num(c) for c in v) + ("," if ties else "") + "\n")
+            f.write(f"{j.id},{pid[j.a]},{pid[j.b]},{j.type}," + ",".join(_num(c) for c in v) + ("," if ties else "")
+                    + (f",{'' if j.gap is None else f'{j.gap:.6g}'}" if gaps else "") + "\n")
         for k, (r, part, n, t1) in enumerate(ties):
             v = list(n) + list(t1) + list(where[r])
-            f.write(f"{len(fasteners) + 1 + k},{pid[r]},{pid[part]},tie," + ",".join(_num(c) for c in v) + ",tip\n")
+            f.write(f"{len(fasteners) + 1 + k},{pid[r]},{pid[part]},tie," + ",".join(_num(c) for c in v) + ",tip" + ("," if gaps else "") + "\n")
     with open(base + ".fasteners.csv", "w") as f:
         f.write("joint,splice,side,row,index,position,family,type,d,clearance,patch_a,patch_b,part_a,part_b\n")
         for j in fasteners:
