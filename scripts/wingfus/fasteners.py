@@ -10,9 +10,9 @@ Junction fasteners (the side-of-body joint) are frictional joint types identifie
 start-up (`from: geometry`, docs/identify.md), one per family; the clearance of each fastener, drawn
 from a tolerance band with a seed, is its own, in the fastener table's column `gap` (or, with
 --clearance-bins N, binned into N joint types per family); the drawn value is also kept in the
-metadata table. The fasteners that attach each box's
-substructure to its skins are linear springs (law spring) with Huth's stiffness: they are not the
-subject of the study and stay stuck far from the joint ("model no more than a scene needs").
+metadata table. The fasteners that attach each box's substructure to its skins are linear springs
+(law spring) with Huth's stiffness: they are not the subject of the study and stay stuck far from
+the joint ("model no more than a scene needs").
 """
 import math
 
@@ -137,12 +137,10 @@ def spar_frames(g, s, side):
     plane (their 5 mm offset is left out: the row carries shear in that plane), so a fastener joins
     two sheets at the same x; its footprint is the element holding it on each."""
     a = g.a
-    if a.spar_frames != "fastened":
+    if a.spar_frames != "fastened" or g.th_spar_grid is None:
         return []
     r_in, r_st = g.R - a.frame_depth, g.R - a.stringer_depth
     rf = (r_in + r_st) / 2 if a.frame_depth > a.stringer_depth + 1e-9 else (r_in + g.R) / 2
-    if g.th_spar_grid is None:
-        return []
     ys0 = g.y_ci - g.W                                        # the spar splice's zone starts here
     yn, zn = g.y_centre.nodes(), g.z_web.nodes()
     clear = lambda y, z: min(abs(yn - y)) > 2 * a.coupling_radius or min(abs(zn - z)) > 2 * a.coupling_radius
