@@ -156,6 +156,17 @@ add_test(NAME wing_small_linear_vs_global
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_small_linear_np1/joints.csv ${BOLTNET_OUT}/wing_small_linear_global_np2/joints.csv 1e-8)
 set_tests_properties(wing_small_linear_vs_global PROPERTIES FIXTURES_REQUIRED "wing_small_linear_np1;wing_small_linear_global_np2")
 
+# Each part is meshed and checked in a process of its own, --jobs at a time (default: the cores):
+# one at a time writes the same meshes and tables, byte for byte.
+add_test(NAME wing_make_tiny_one_job COMMAND ${_wfgen} ${_wf}/one-job tiny --size tiny --load-steps 2 --jobs 1)
+set_tests_properties(wing_make_tiny_one_job PROPERTIES FIXTURES_SETUP wing_tiny_one_job)
+add_test(NAME wing_make_tiny_jobs_same_files
+  COMMAND sh -c "cd \"$0\" && for f in tiny.joints.csv tiny.bcs.csv tiny.patches.csv tiny.fasteners.csv tiny-mesh/*.msh; do cmp \"$f\" \"$1/$f\" || exit 1; done && echo 'the same files'"
+          ${_wf} ${_wf}/one-job)
+set_tests_properties(wing_make_tiny_jobs_same_files PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_one_job")
+boltnet_expect(wing_make_bad_jobs 1 --fail --match "--jobs must be at least 1"
+  -- ${_wfgen} ${_wf}/bad bad --size tiny --jobs 0)
+
 # Bad parameters stop the generator with a message naming them, and nothing is run.
 boltnet_expect(wing_make_bad_gap 1 --fail --match "--butt-gap 5.* is too small for the tee's stem"
   -- ${_wfgen} ${_wf}/bad bad --size tiny --butt-gap 5)

@@ -79,14 +79,15 @@ def wing_loads(g, a, s, t):
     return [r for r in rows if r[3] != 0.0]
 
 
-def resultant(rows, xyz_of, sets_of, origin):
-    """Force and moment about `origin` of node-set forces shared equally by each set's nodes."""
+def resultant(rows, set_xyz, origin):
+    """Force and moment about `origin` of node-set forces shared equally by each set's nodes;
+    set_xyz: {part: {set: coordinates of its nodes}}."""
     F, M = np.zeros(3), np.zeros(3)
     k = {"ux": 0, "uy": 1, "uz": 2}
     for part, dof, kind, value, st in rows:
         if kind != "force":
             continue
-        x = xyz_of[part][sets_of[part][st]]
+        x = set_xyz[part][st]
         f = np.zeros(3)
         f[k[dof]] = value / len(x)
         F += f * len(x)
@@ -101,11 +102,11 @@ def cabin_pressure(a):
     return [("fuselage", "all", "pressure", a.cabin_pressure, "skin", "cabin")]
 
 
-def rigid_tip(g, s, t, rows, xyz_of, sets_of, origin):
+def rigid_tip(g, s, t, rows, set_xyz, origin):
     """The tip load of one wing through a rigid patch: its position P (the tip section's centre),
     the tie joints (part, joint axis n, t1) from it to each part of the box, and its bcs rows: the
     force and moment at P with the same resultant about `origin` as the beam-theory rows."""
-    F, M = resultant(rows, xyz_of, sets_of, origin)
+    F, M = resultant(rows, set_xyz, origin)
     P = np.array([g.b / 2, s * g.y_tip, (g.z_up + g.z_lo) / 2])
     MP = M - np.cross(P - origin, F)
     ties = [(f"outer_{p}{t}", (0.0, float(s), 0.0), (1.0, 0.0, 0.0)) for p in ("upper", "lower", "sub")]

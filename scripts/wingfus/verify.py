@@ -14,6 +14,8 @@ each part:
 - the footprints of two fasteners on one part share no node (boltnet would give the node to the
   nearer one, silently changing both);
 - no footprint node carries a boundary condition (boltnet stops on it with exact coupling).
+
+Each part is checked on its own (check_part), by the process that meshed it.
 """
 import numpy as np
 from scipy.spatial import cKDTree
@@ -72,32 +74,38 @@ def footprints(mesh, fasteners, side, radius, reach):
     return out
 
 
-def check(part_meshes, part_sets, fasteners, radius, reach):
-    """part_meshes: name -> (xyz, quads); part_sets: name -> {set: node indices}; radius and reach:
-    -coupling_radius and -coupling_reach."""
+def check_part(part, mesh, sets, lst, radius, reach):
+    """The rules on one part: mesh (xyz, quads); sets: {set: node indices}; lst: the (fastener, side)
+    pairs that attach to it ('a' or 'b'); radius and reach: -coupling_radius and -coupling_reach.
+    The generator checks each part as it meshes it, in its own process, so that no process holds
+    more than one part's mesh."""
+    quads = mesh[1]
+    elem = {}
+    for side in ("a", "b"):
+        fs = [f for f, s in lst if s == side]
+        if fs:
+            el = footprints(mesh, fs, side, radius, reach)
+            elem.update({(f.id, side): el[f.id] for f in fs})
+    owner = {}
+    for f, side in lst:
+        for nd in quads[elem[(f.id, side)]]:
+            if nd in owner:
+                raise ValueError(f"fasteners {owner[nd]} and {f.id} share node {nd} of part '{part}' in their footprints: too close for the mesh")
+            owner[nd] = f.id
+    for name, nodes in sets.items():
+        hit = set(nodes.tolist()) & owner.keys()
+        if hit:
+            nd = hit.pop()
+            raise ValueError(f"fastener {owner[nd]}'s footprint holds node {nd} of part '{part}', which is in node set '{name}' (a boundary condition)")
+
+
+def by_part(fasteners, built):
+    """{part: [(fastener, side)]}; a fastener naming a part not in `built` is an error."""
     by = {}
     for f in fasteners:
-        by.setdefault(f.a, []).append((f, "a"))
-        by.setdefault(f.b, []).append((f, "b"))
-    for part, lst in by.items():
-        if part not in part_meshes:
-            raise ValueError(f"fasteners name part '{part}', which was not built")
         for side in ("a", "b"):
-            fs = [f for f, s in lst if s == side]
-            if not fs:
-                continue
-            el = footprints(part_meshes[part], fs, side, radius, reach)
-            for f in fs:
-                setattr(f, "elem_" + side, el[f.id])
-        quads = part_meshes[part][1]
-        owner = {}
-        for f, side in lst:
-            for nd in quads[getattr(f, "elem_" + side)]:
-                if nd in owner:
-                    raise ValueError(f"fasteners {owner[nd]} and {f.id} share node {nd} of part '{part}' in their footprints: too close for the mesh")
-                owner[nd] = f.id
-        for name, nodes in part_sets.get(part, {}).items():
-            hit = set(nodes.tolist()) & owner.keys()
-            if hit:
-                nd = hit.pop()
-                raise ValueError(f"fastener {owner[nd]}'s footprint holds node {nd} of part '{part}', which is in node set '{name}' (a boundary condition)")
+            part = getattr(f, side)
+            if part not in built:
+                raise ValueError(f"fastener {f.id} names part '{part}', which is not built")
+            by.setdefault(part, []).append((f, side))
+    return by
