@@ -132,10 +132,9 @@ class Geometry:
         self.stringers_lo = lo[1:]          # not at the keel (y = 0): a blade there lies in the symmetry plane
         self.stringers_up = up[:-1]
         # The frames at the spars, fastened to the spar webs (--spar-frames fastened), go on below the
-        # cut-out's edge inside the box: from the first frame node whose outer edge is above the lower
-        # skin's mid-surface.
-        # Below the edge its elements are its own (no skin there): about half the fastener pitch along
-        # the frame, no finer than a quarter of the fuselage's element.
+        # cut-out's edge inside the box, from the first frame node whose outer edge is above the lower
+        # skin's mid-surface, on a grid of their own there (no skin shares it): elements of about half
+        # the fastener pitch along the frame, no finer than a quarter of the fuselage's element.
         starts = [seg[0] for seg in th.segs if seg[0] < self.th_e - 1e-12 and R * math.sin(seg[0]) >= self.z_lo]
         self.th_spar_frame = min(starts) if starts and a.spar_frames == "fastened" else self.th_e
         rf = R - a.frame_depth / 2
