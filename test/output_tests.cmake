@@ -96,10 +96,10 @@ boltnet_expect(bad_tie_node_coupling 2 ${_bad} --match "Joint 0: its footprint i
 # A joint's own gap and pretension (the fastener table's columns `gap` and `pretension`,
 # docs/scenes.md "Per-joint parameters"): fig3c's joint with 0.03 mm and 8 kN in place of its
 # type's 0.05 mm and 10 kN follows fig3c's closed form with j = 0.03 mm and G = mu nf Pc = 2400 N,
-# through stick, slide and bearing both ways, on 1 and 2 ranks (with the type's values the same
+# through stick, slide and bearing both ways, on 1, 2 and 3 ranks (with the type's values the same
 # check fails at the first slide). A negative gap, a gap on a linear spring and a pretension on the
 # contact law are refused, naming the file, line and column.
-foreach(ranks 1 2)
+foreach(ranks 1 2 3)
   boltnet_run(fig3c_own_gap ${ranks} ${BOLTNET_SCENES}/fig3c.yaml -scene_joints ${BOLTNET_TEST_SCENES}/fig3c-gap.joints.csv)
   add_test(NAME fig3c_own_gap_closed_form_np${ranks}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_fig3c.py ${BOLTNET_OUT}/fig3c_own_gap_np${ranks}/joints.csv 1.5e5 5000 4e4 0.03 2400)
