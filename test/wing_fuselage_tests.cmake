@@ -1,5 +1,5 @@
 # The wing-fuselage junction (scripts/make-wing-fuselage, docs/wing-fuselage.md): the tiny size,
-# generated here, through the driver on 1 and 2 ranks, against independent checks.
+# generated here, through the driver on 1, 2 and 3 ranks, against independent checks.
 set(_wf ${BOLTNET_OUT}/wing)
 set(_wfgen ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-wing-fuselage)
 # The checks below measure the model against independent references to 1e-6 and finer, so they need
@@ -11,12 +11,12 @@ set(_wfgen ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-wing-fuselage)
 set(_exact -patch_condense false)
 
 # wing_tiny_balanced(NAME GENERATOR-ARGS...): the tiny junction NAME generated with the arguments,
-# run on 1 and 2 ranks. Each outer box is held only by the side-of-body fasteners: they balance its
+# run on 1, 2 and 3 ranks. Each outer box is held only by the side-of-body fasteners: they balance its
 # tip load at every step (check_junction_equilibrium.py says why 1e-6).
 function(wing_tiny_balanced name)
   add_test(NAME wing_make_${name} COMMAND ${_wfgen} ${_wf} ${name} --size tiny --load-steps 2 ${ARGN})
   set_tests_properties(wing_make_${name} PROPERTIES FIXTURES_SETUP wing_${name}_scene)
-  foreach(ranks 1 2)
+  foreach(ranks 1 2 3)
     boltnet_run(wing_${name} ${ranks} ${_wf}/${name}.yaml ${_exact})
     set_tests_properties(run_wing_${name}_np${ranks} PROPERTIES FIXTURES_REQUIRED wing_${name}_scene)
     add_test(NAME wing_${name}_equilibrium_np${ranks}
@@ -28,8 +28,8 @@ endfunction()
 # The frictional scene along its load path (1 g, 2.5 g, -1 g, 0; two steps per segment).
 wing_tiny_balanced(tiny)
 # Each fastener's own drawn clearance (the fastener table's column gap) is the one its law used: it
-# bears exactly when its slip exceeds that gap, at every step (check_own_gaps.py), on 1 and 2 ranks.
-foreach(ranks 1 2)
+# bears exactly when its slip exceeds that gap, at every step (check_own_gaps.py), on 1, 2 and 3 ranks.
+foreach(ranks 1 2 3)
   add_test(NAME wing_tiny_own_gaps_np${ranks}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_own_gaps.py ${BOLTNET_OUT}/wing_tiny_np${ranks} ${_wf}/tiny.joints.csv)
   set_tests_properties(wing_tiny_own_gaps_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np${ranks}")
@@ -156,7 +156,7 @@ add_test(NAME wing_small_linear_vs_global
   COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/wing_small_linear_np1/joints.csv ${BOLTNET_OUT}/wing_small_linear_global_np2/joints.csv 1e-8)
 set_tests_properties(wing_small_linear_vs_global PROPERTIES FIXTURES_REQUIRED "wing_small_linear_np1;wing_small_linear_global_np2")
 
-# Each part is meshed and checked in a process of its own, --jobs at a time (default: the cores):
+# Each part is meshed and checked in a process of its own, --jobs at a time (default: the cores it may use):
 # one at a time writes the same meshes and tables, byte for byte.
 add_test(NAME wing_make_tiny_one_job COMMAND ${_wfgen} ${_wf}/one-job tiny --size tiny --load-steps 2 --jobs 1)
 set_tests_properties(wing_make_tiny_one_job PROPERTIES FIXTURES_SETUP wing_tiny_one_job)
@@ -231,11 +231,11 @@ set_tests_properties(wing_tiny_cabin_held_superposition PROPERTIES FIXTURES_REQU
 # The tip load through a rigid patch (--tip-load rigid): a 6-dof node at the tip section's centre
 # tied to each part's whole tip section (fastener table column `footprint`), loaded with the beam
 # loads' resultant. With the rigid patch in the free body, each outer box is again held by the
-# side-of-body fasteners alone, which balance the tip load at every step, on 1 and 2 ranks.
+# side-of-body fasteners alone, which balance the tip load at every step, on 1, 2 and 3 ranks.
 wing_tiny_balanced(tinyr --tip-load rigid)
 # The ties carry the whole tip load; the most loaded joint the run reports is a fastener's
-# (check_most_loaded.py recomputes it from joints.csv without the ties).
-foreach(ranks 1 2)
+# (check_most_loaded.py recomputes it from joints.csv without the ties), on 1, 2 and 3 ranks.
+foreach(ranks 1 2 3)
   add_test(NAME wing_tinyr_most_loaded_np${ranks}
     COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_most_loaded.py ${BOLTNET_OUT}/wing_tinyr_np${ranks} ${_wf}/tinyr.joints.csv)
   set_tests_properties(wing_tinyr_most_loaded_np${ranks} PROPERTIES FIXTURES_REQUIRED "wing_tinyr_scene;wing_tinyr_np${ranks}")
