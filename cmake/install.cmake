@@ -3,12 +3,14 @@
 # under the GNU directories (docs/install.md has the layout; test/check_install.sh runs the README's
 # commands against it).
 #   P/share/boltnet/scenes     the scenes (YAML, CSV tables, meshes); the driver finds them by name
+#   P/share/boltnet/solvers    options files for other linear solvers (-options_file)
 #   P/share/boltnet/scripts    the scripts a user runs: charts, the plate-grid generator, mpienv
 #   P/share/boltnet/identify   load-slip curves for boltnet-identify -curve
 #   P/share/doc/boltnet        README.md and docs/ (the same relative links as in the repository)
 set(BOLTNET_INSTALL_DATADIR "${CMAKE_INSTALL_DATADIR}/boltnet")
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/share/scenes/ DESTINATION ${BOLTNET_INSTALL_DATADIR}/scenes)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/share/solvers/ DESTINATION ${BOLTNET_INSTALL_DATADIR}/solvers)
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/plot_joints.py ${PROJECT_SOURCE_DIR}/scripts/plot_fields.py
                  ${PROJECT_SOURCE_DIR}/scripts/make-plate-grid
         DESTINATION ${BOLTNET_INSTALL_DATADIR}/scripts)

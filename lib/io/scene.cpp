@@ -60,13 +60,15 @@ PetscErrorCode IdCell(MPI_Comm comm, const Table &t, size_t row, const std::stri
 // Measured on fig3a with PETSc 3.18: -snes_view, -ksp_view, -dm_view, -snes_converged_reason,
 // -ksp_converged_reason, -snes_test_jacobian and -mat_mumps_icntl_14 are unused before SNESSolve;
 // so are the options of BDDC's subdomain and coarse solvers (-pc_bddc_dirichlet_, -pc_bddc_neumann_,
-// -pc_bddc_coarse_), which PCSetUp_BDDC creates.
+// -pc_bddc_coarse_), which PCSetUp_BDDC creates, and those of the solvers that PCSetUp creates for
+// PCFIELDSPLIT's splits (-fieldsplit_), for multigrid's levels (-mg_levels_, -mg_coarse_) and for
+// block Jacobi's blocks (-sub_).
 bool ReadDuringSolve(const std::string &name)
 {
   auto ends   = [&](const std::string &s) { return name.size() >= s.size() && name.compare(name.size() - s.size(), s.size(), s) == 0; };
   auto starts = [&](const std::string &s) { return name.rfind(s, 0) == 0; };
   if (ends("_view") || name.find("_view_") != std::string::npos || ends("_converged_reason")) return true;
-  for (const char *p : {"snes_test_", "ksp_test_", "mat_mumps_", "mat_superlu", "mat_umfpack_", "mat_cholmod_", "mat_klu_", "mat_strumpack_", "log_", "pc_bddc_dirichlet_", "pc_bddc_neumann_", "pc_bddc_coarse_"})
+  for (const char *p : {"snes_test_", "ksp_test_", "mat_mumps_", "mat_superlu", "mat_umfpack_", "mat_cholmod_", "mat_klu_", "mat_strumpack_", "log_", "pc_bddc_dirichlet_", "pc_bddc_neumann_", "pc_bddc_coarse_", "fieldsplit_", "mg_levels_", "mg_coarse_", "sub_"})
     if (starts(p)) return true;
   return false;
 }

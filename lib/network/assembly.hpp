@@ -51,6 +51,9 @@ struct AssemblyOptions {
   // The six rigid-body modes of the nodes as the Jacobian's near-null space (MatSetNearNullSpace),
   // for algebraic multigrid (docs/solver.md, "Iterative solvers"); LU ignores it.
   PetscBool    near_null_space = PETSC_TRUE;
+  // With PCFIELDSPLIT: the splits m (masters) and s (exact coupling's slaves) of a Jacobian kept
+  // whole (AssemblySetSlaveSplit).
+  PetscBool    slave_split = PETSC_TRUE;
   // The Jacobian also as a MATIS, one subdomain per rank, for PCBDDC (docs/solver.md, "BDDC").
   PetscBool    matis = PETSC_FALSE;
   // Cutting and balancing (docs/architecture.md): the largest patch in nodes (0: never cut,
@@ -281,6 +284,9 @@ struct Equilibrium {
 };
 PetscErrorCode AssemblyEquilibrium(BoltnetAssembly a, Vec X, Equilibrium *eq);
 std::string    DescribeEquilibrium(const Equilibrium &eq);
+// With -pc_type fieldsplit on a Jacobian kept whole: the splits "m" (masters) and "s" (exact
+// coupling's slaves), the masters with their rigid-body modes (network/jacobian.cpp).
+PetscErrorCode AssemblySetSlaveSplit(BoltnetAssembly a, PC pc);
 // MUMPS null pivot detection (ICNTL(24), threshold CNTL(3)) on the SNES's factorisation, and its
 // factors on disk (ICNTL(22)) once they did not fit in memory; a no-op for other solvers. Call
 // after the solver is set up and after every PCReset.

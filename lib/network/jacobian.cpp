@@ -118,27 +118,25 @@ void CarriedCoordinates(BoltnetAssembly a, std::vector<std::array<double, 3>> &x
   }
 }
 
-// The six rigid-body modes of the network's dof (three translations, three rotations
-// u = theta x (x - c), with the rotation dof set), orthonormalised, as the Jacobian's near-null
-// space: what GAMG needs for 6-dof shell nodes (MatNullSpaceCreateRigidBody handles only block
-// sizes 1-3; docs/architecture.md).
-PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
+// The six rigid-body modes (three translations, three rotations u = theta x (x - c), with the
+// rotation dof set) of the nodes at x, 6 dof each in that order on this rank, orthonormalised, as
+// a near-null space: what GAMG needs for 6-dof shell nodes (MatNullSpaceCreateRigidBody handles
+// only block sizes 1-3; docs/architecture.md).
+PetscErrorCode CreateRigidBodyModes(MPI_Comm comm, const std::vector<std::array<double, 3>> &x, MatNullSpace *nsp)
 {
-  std::vector<std::array<double, 3>> x;
-  Vec                                modes[6];
-  MatNullSpace                       nsp;
+  Vec modes[6];
   PetscFunctionBeginUser;
-  CarriedCoordinates(a, x);
   double c[3] = {0, 0, 0}, cg[3];
   double nloc = (double)x.size(), ng;
   for (const auto &p : x)
     for (int k = 0; k < 3; ++k) c[k] += p[k];
-  PetscCallMPI(MPI_Allreduce(c, cg, 3, MPI_DOUBLE, MPI_SUM, a->comm));
-  PetscCallMPI(MPI_Allreduce(&nloc, &ng, 1, MPI_DOUBLE, MPI_SUM, a->comm));
+  PetscCallMPI(MPI_Allreduce(c, cg, 3, MPI_DOUBLE, MPI_SUM, comm));
+  PetscCallMPI(MPI_Allreduce(&nloc, &ng, 1, MPI_DOUBLE, MPI_SUM, comm));
   for (int k = 0; k < 3; ++k) cg[k] /= ng > 0 ? ng : 1;
   for (int m = 0; m < 6; ++m) {
     PetscScalar *v;
-    PetscCall(VecDuplicate(a->X, &modes[m]));
+    PetscCall(VecCreateMPI(comm, 6 * (PetscInt)x.size(), PETSC_DETERMINE, &modes[m]));
+    PetscCall(VecSetBlockSize(modes[m], 6));
     PetscCall(VecGetArray(modes[m], &v));
     for (size_t n = 0; n < x.size(); ++n) {
       PetscScalar *u = v + 6 * n;
@@ -162,11 +160,22 @@ PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
     }
     PetscCall(VecNormalize(modes[m], nullptr));
   }
-  PetscCall(MatNullSpaceCreate(a->comm, PETSC_FALSE, 6, modes, &nsp));
+  PetscCall(MatNullSpaceCreate(comm, PETSC_FALSE, 6, modes, nsp));
+  for (int m = 0; m < 6; ++m) PetscCall(VecDestroy(&modes[m]));
+  PetscFunctionReturn(0);
+}
+
+// The rigid-body modes of every node the network carries as the Jacobian's near-null space.
+PetscErrorCode SetRigidBodyModes(BoltnetAssembly a)
+{
+  std::vector<std::array<double, 3>> x;
+  MatNullSpace                       nsp;
+  PetscFunctionBeginUser;
+  CarriedCoordinates(a, x);
+  PetscCall(CreateRigidBodyModes(a->comm, x, &nsp));
   PetscCall(MatSetNearNullSpace(a->J, nsp));
   if (a->isolve.P) PetscCall(MatSetNearNullSpace(a->isolve.P, nsp));
   PetscCall(MatNullSpaceDestroy(&nsp));
-  for (int m = 0; m < 6; ++m) PetscCall(VecDestroy(&modes[m]));
   PetscFunctionReturn(0);
 }
 
@@ -262,6 +271,68 @@ PetscErrorCode CreateSubdomainMatrix(BoltnetAssembly a)
 }
 
 } // namespace
+
+// The rows of exact coupling's slaves and the rest (the masters), for PCFIELDSPLIT on a Jacobian
+// kept whole. A slave row holds c (u_s - T u_m) and the master rows hold T^T K T with no slave
+// column (patch/patch.hpp), so J is block lower triangular in (masters, slaves): a multiplicative
+// split solves it exactly given a solver of the master block, which is the symmetric stiffness
+// with the footprints eliminated. The master split gets the rigid-body modes of its own nodes as
+// near-null space (composed on its IS, which PCFIELDSPLIT gives its submatrix).
+PetscErrorCode AssemblySetSlaveSplit(BoltnetAssembly a, PC pc)
+{
+  std::vector<std::array<double, 3>> x;
+  std::vector<char>                  slave;
+  PetscFunctionBeginUser;
+  CarriedCoordinates(a, x);
+  for (const OwnedPatch &op : a->patches.owned) {
+    if (!op.shell) {
+      slave.push_back(0);
+      continue;
+    }
+    const ShellPatch &sp = a->layout.shells.at(op.index);
+    std::vector<char> in_footprint(sp.mesh.x.size(), 0);
+    if (!sp.condensed && a->opt.coupling_type == CouplingType::Exact)
+      for (const auto &jn : sp.joint_nodes)
+        for (int n : jn.footprint) in_footprint[n] = 1;
+    for (int n : sp.carried) slave.push_back(n < (int)in_footprint.size() && in_footprint[n] ? 1 : 0);
+  }
+  PetscInt rstart, n;
+  PetscCall(VecGetOwnershipRange(a->X, &rstart, nullptr));
+  PetscCall(VecGetLocalSize(a->X, &n));
+  PetscCheck((PetscInt)slave.size() * 6 == n, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%zu carried nodes for %" PetscInt_FMT " owned dof", slave.size(), n);
+  std::vector<PetscInt> im, is;
+  std::vector<size_t>   mnode;
+  for (size_t k = 0; k < slave.size(); ++k) {
+    auto &v = slave[k] ? is : im;
+    for (int i = 0; i < 6; ++i) v.push_back(rstart + 6 * (PetscInt)k + i);
+    if (!slave[k]) mnode.push_back(k);
+  }
+  PetscInt nslave = (PetscInt)is.size(), nslave_global;
+  PetscCallMPI(MPI_Allreduce(&nslave, &nslave_global, 1, MPIU_INT, MPI_SUM, a->comm));
+  if (!nslave_global) { // node or penalty coupling, or every patch condensed: PCFIELDSPLIT's own splits
+    PetscCall(PetscInfo(pc, "No slave rows: PCFIELDSPLIT keeps its own splits\n"));
+    PetscFunctionReturn(0);
+  }
+  IS ism, iss;
+  PetscCall(ISCreateGeneral(a->comm, (PetscInt)im.size(), im.data(), PETSC_COPY_VALUES, &ism));
+  PetscCall(ISCreateGeneral(a->comm, (PetscInt)is.size(), is.data(), PETSC_COPY_VALUES, &iss));
+  PetscCall(ISSetBlockSize(ism, 6));
+  PetscCall(ISSetBlockSize(iss, 6));
+  if (a->opt.near_null_space) {
+    std::vector<std::array<double, 3>> xm;
+    MatNullSpace                       nsp;
+    xm.reserve(mnode.size());
+    for (size_t k : mnode) xm.push_back(x[k]);
+    PetscCall(CreateRigidBodyModes(a->comm, xm, &nsp));
+    PetscCall(PetscObjectCompose((PetscObject)ism, "nearnullspace", (PetscObject)nsp));
+    PetscCall(MatNullSpaceDestroy(&nsp));
+  }
+  PetscCall(PCFieldSplitSetIS(pc, "m", ism));
+  PetscCall(PCFieldSplitSetIS(pc, "s", iss));
+  PetscCall(ISDestroy(&ism));
+  PetscCall(ISDestroy(&iss));
+  PetscFunctionReturn(0);
+}
 
 // The Jacobian's nonzero pattern, counted exactly with MATPREALLOCATOR: each joint couples the 6
 // dof of its node on patch a with those of its node on patch b (12 x 12), wherever the two

@@ -130,24 +130,27 @@ static PetscErrorCode SetBDDCFields(BoltnetAssembly a, PC pc)
 // A fresh preconditioner for the next solve. PCReset for a factorisation: a failed one leaves
 // MUMPS in an error state that the next solve would raise. BDDC is made anew instead (its type
 // set again, its options read again, its fields given again): in PETSc 3.18.5 a PCSetUp after
-// PCReset on PCBDDC crashes in PCBDDCGraphInit.
+// PCReset on PCBDDC crashes in PCBDDCGraphInit. So is the slave split, whose splits are given
+// before the set-up.
 PetscErrorCode AssemblyResetPC(BoltnetAssembly a)
 {
   KSP       ksp;
   PC        pc;
-  PetscBool bddc;
+  PetscBool bddc, split;
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(a->snes, &ksp));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCBDDC, &bddc));
-  if (!bddc) {
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &split));
+  if (!bddc && !(split && a->opt.slave_split)) {
     PetscCall(PCReset(pc));
     PetscFunctionReturn(0);
   }
   PetscCall(PCSetType(pc, PCNONE));
-  PetscCall(PCSetType(pc, PCBDDC));
+  PetscCall(PCSetType(pc, bddc ? PCBDDC : PCFIELDSPLIT));
   PetscCall(PCSetFromOptions(pc));
-  PetscCall(SetBDDCFields(a, pc));
+  if (bddc) PetscCall(SetBDDCFields(a, pc));
+  else PetscCall(AssemblySetSlaveSplit(a, pc));
   PetscFunctionReturn(0);
 }
 
@@ -281,6 +284,11 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscOptionsEnd();
   PetscCheck(a->checks.equilibrium_rtol > 0 && a->checks.equilibrium_rtol < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_equilibrium_rtol %g must lie in (0, 1)", (double)a->checks.equilibrium_rtol);
   PetscCheck(a->checks.null_pivot_threshold > 0 && a->checks.null_pivot_threshold < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_null_pivot_threshold %g must lie in (0, 1)", (double)a->checks.null_pivot_threshold);
+  {
+    PetscBool fs;
+    PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
+    if (fs && a->opt.slave_split) PetscCall(AssemblySetSlaveSplit(a, pc));
+  }
   PetscCall(AssemblySetUpNullPivots(a));
   // SNESSetFromOptions may have changed the SNES type (-snes_type ksponly, say), which destroys the
   // line search fetched above and gives the SNES a new one: fetch it again.
