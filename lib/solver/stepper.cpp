@@ -355,7 +355,10 @@ PetscErrorCode AtFloorInBalance(BoltnetAssembly a, Vec X, Vec F, PetscReal fnorm
   PetscCall(VecScale(bound, 100.0 * PETSC_MACHINE_EPSILON));
   PetscCall(VecShift(bound, PETSC_SMALL * PETSC_MACHINE_EPSILON)); // rows with nothing in them
   PetscCall(VecPointwiseDivide(share, F, bound));
-  PetscCall(VecNorm(share, NORM_INFINITY, &worst)); // the largest |F_i| / bound_i
+  PetscCall(VecAbs(share));
+  PetscInt row;
+  PetscCall(VecMax(share, &row, &worst)); // the largest |F_i| / bound_i
+  if (worst > 1) PetscCall(PetscInfo(snes, "Not at the round-off floor: row %" PetscInt_FMT " has |F_i| %g times 100 eps (|J| |x|)_i\n", row, (double)worst));
   PetscCall(VecDestroy(&share));
   PetscCall(VecDestroy(&bound));
   if (worst <= 1) {
