@@ -24,20 +24,24 @@ boltnet_expect(near_null_space_off 1 --match "no near-null space attached" --mat
 # 1e-8 of the largest and states identical. (The 6-plate grid of the runs above also agrees, but
 # takes minutes under -malloc_debug; on 2 ranks the pair took over 10 minutes on the shared machine
 # and is left out; results on several ranks are compared through LU by the tests above.)
+# boltnet_run_same_as_lu(NAME RANKS FIXTURE REFERENCE RTOL SCENE ARGS...): the run NAME on RANKS
+# ranks (needing FIXTURE), and its joints.csv against the run REFERENCE's (MUMPS LU) to RTOL.
+function(boltnet_run_same_as_lu name ranks fixture reference rtol scene)
+  boltnet_run(${name} ${ranks} ${scene} ${ARGN})
+  set_tests_properties(run_${name}_np${ranks} PROPERTIES FIXTURES_REQUIRED ${fixture})
+  add_test(NAME ${name}_np${ranks}_same_as_lu
+    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/${reference}/joints.csv ${BOLTNET_OUT}/${name}_np${ranks}/joints.csv ${rtol})
+  set_tests_properties(${name}_np${ranks}_same_as_lu PROPERTIES FIXTURES_REQUIRED "${reference};${name}_np${ranks}")
+endfunction()
+
 add_test(NAME make_plate_grid_pair
   COMMAND ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/make-plate-grid ${BOLTNET_OUT}/grid pair --nx 2 --ny 1)
 set_tests_properties(make_plate_grid_pair PROPERTIES FIXTURES_SETUP grid_pair)
 boltnet_run(plate_grid_pair 1 ${BOLTNET_OUT}/grid/pair.yaml)
 set_tests_properties(run_plate_grid_pair_np1 PROPERTIES FIXTURES_REQUIRED grid_pair)
-foreach(ranks 1)
-  boltnet_run(plate_grid_pair_gamg ${ranks} ${BOLTNET_OUT}/grid/pair.yaml -patch_condense false
-    -ksp_type gmres -ksp_gmres_restart 200 -ksp_pc_side right -pc_type gamg -ksp_rtol 1e-8 -ksp_max_it 300
-    -ksp_error_if_not_converged -load_max_cuts 0)
-  set_tests_properties(run_plate_grid_pair_gamg_np${ranks} PROPERTIES FIXTURES_REQUIRED grid_pair)
-  add_test(NAME plate_grid_pair_gamg_np${ranks}_same_as_lu
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_pair_np1/joints.csv ${BOLTNET_OUT}/plate_grid_pair_gamg_np${ranks}/joints.csv 1e-8)
-  set_tests_properties(plate_grid_pair_gamg_np${ranks}_same_as_lu PROPERTIES FIXTURES_REQUIRED "plate_grid_pair_np1;plate_grid_pair_gamg_np${ranks}")
-endforeach()
+boltnet_run_same_as_lu(plate_grid_pair_gamg 1 grid_pair plate_grid_pair_np1 1e-8 ${BOLTNET_OUT}/grid/pair.yaml
+  -patch_condense false -ksp_type gmres -ksp_gmres_restart 200 -ksp_pc_side right -pc_type gamg -ksp_rtol 1e-8 -ksp_max_it 300
+  -ksp_error_if_not_converged -load_max_cuts 0)
 
 # The slave split (-interface_slave_split, docs/solver.md "Algebraic multigrid"): with
 # share/solvers/multigrid.opts, PCFIELDSPLIT gets boltnet's two splits (m: every row but the slaves
@@ -48,12 +52,8 @@ endforeach()
 # largest, states identical.
 set(BOLTNET_MULTIGRID ${PROJECT_SOURCE_DIR}/share/solvers/multigrid.opts)
 foreach(ranks 1 2 3)
-  boltnet_run(plate_grid_pair_split ${ranks} ${BOLTNET_OUT}/grid/pair.yaml -options_file ${BOLTNET_MULTIGRID}
-    -ksp_error_if_not_converged -load_max_cuts 0)
-  set_tests_properties(run_plate_grid_pair_split_np${ranks} PROPERTIES FIXTURES_REQUIRED grid_pair)
-  add_test(NAME plate_grid_pair_split_np${ranks}_same_as_lu
-    COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_pair_np1/joints.csv ${BOLTNET_OUT}/plate_grid_pair_split_np${ranks}/joints.csv 1e-8)
-  set_tests_properties(plate_grid_pair_split_np${ranks}_same_as_lu PROPERTIES FIXTURES_REQUIRED "plate_grid_pair_np1;plate_grid_pair_split_np${ranks}")
+  boltnet_run_same_as_lu(plate_grid_pair_split ${ranks} grid_pair plate_grid_pair_np1 1e-8 ${BOLTNET_OUT}/grid/pair.yaml
+    -options_file ${BOLTNET_MULTIGRID} -ksp_error_if_not_converged -load_max_cuts 0)
 endforeach()
 # The splits are boltnet's (-ksp_view names two, defined by index sets); with
 # -interface_slave_split false PCFIELDSPLIT makes its own (here one per dof of the block size 6),
@@ -79,20 +79,13 @@ add_test(NAME make_plate_grid_6x5
 set_tests_properties(make_plate_grid_6x5 PROPERTIES FIXTURES_SETUP grid_6x5)
 set(BOLTNET_6X5_LINEAR -joint_bolt_law spring -load_path ramp -load_max 50000 -load_steps 1 -output_fields false)
 boltnet_run(plate_grid_6x5_linear 1 ${BOLTNET_OUT}/grid/g6x5.yaml ${BOLTNET_6X5_LINEAR})
-boltnet_run(plate_grid_6x5_split 1 ${BOLTNET_OUT}/grid/g6x5.yaml ${BOLTNET_6X5_LINEAR} -options_file ${BOLTNET_MULTIGRID}
-  -snes_type ksponly -ksp_error_if_not_converged -load_max_cuts 0)
-set_tests_properties(run_plate_grid_6x5_linear_np1 run_plate_grid_6x5_split_np1 PROPERTIES FIXTURES_REQUIRED grid_6x5)
-add_test(NAME plate_grid_6x5_split_same_as_lu
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_6x5_linear_np1/joints.csv ${BOLTNET_OUT}/plate_grid_6x5_split_np1/joints.csv 1e-6)
-set_tests_properties(plate_grid_6x5_split_same_as_lu PROPERTIES FIXTURES_REQUIRED "plate_grid_6x5_linear_np1;plate_grid_6x5_split_np1")
+set_tests_properties(run_plate_grid_6x5_linear_np1 PROPERTIES FIXTURES_REQUIRED grid_6x5)
+boltnet_run_same_as_lu(plate_grid_6x5_split 1 grid_6x5 plate_grid_6x5_linear_np1 1e-6 ${BOLTNET_OUT}/grid/g6x5.yaml
+  ${BOLTNET_6X5_LINEAR} -options_file ${BOLTNET_MULTIGRID} -snes_type ksponly -ksp_error_if_not_converged -load_max_cuts 0)
 
 # The 3 x 2 grid's frictional analysis (14 fasteners through stick, slide and bearing) through the
 # split, on 1 rank: the case where Newton stalled above the round-off test of a converged step
 # until the options file gave SNES a step tolerance (docs/solver.md, "Algebraic multigrid"); its
 # joints.csv against MUMPS LU's (condensed, the default) to 1e-8, states identical.
-boltnet_run(plate_grid_small_split 1 ${BOLTNET_OUT}/grid/small.yaml -options_file ${BOLTNET_MULTIGRID}
-  -ksp_error_if_not_converged -load_max_cuts 0)
-set_tests_properties(run_plate_grid_small_split_np1 PROPERTIES FIXTURES_REQUIRED grid_scene)
-add_test(NAME plate_grid_small_split_same_as_lu
-  COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/compare_csv.py ${BOLTNET_OUT}/plate_grid_small_np1/joints.csv ${BOLTNET_OUT}/plate_grid_small_split_np1/joints.csv 1e-8)
-set_tests_properties(plate_grid_small_split_same_as_lu PROPERTIES FIXTURES_REQUIRED "plate_grid_small_np1;plate_grid_small_split_np1")
+boltnet_run_same_as_lu(plate_grid_small_split 1 grid_scene plate_grid_small_np1 1e-8 ${BOLTNET_OUT}/grid/small.yaml
+  -options_file ${BOLTNET_MULTIGRID} -ksp_error_if_not_converged -load_max_cuts 0)
