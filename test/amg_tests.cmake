@@ -89,3 +89,10 @@ boltnet_run_same_as_lu(plate_grid_6x5_split 1 grid_6x5 plate_grid_6x5_linear_np1
 # joints.csv against MUMPS LU's (condensed, the default) to 1e-8, states identical.
 boltnet_run_same_as_lu(plate_grid_small_split 1 grid_scene plate_grid_small_np1 1e-8 ${BOLTNET_OUT}/grid/small.yaml
   -options_file ${BOLTNET_MULTIGRID} -ksp_error_if_not_converged -load_max_cuts 0)
+
+# A model without slave rows (fig3c: two rigid patches) cannot be split: one line naming the option
+# and what to use instead, exit 1, nothing written.
+boltnet_expect(bad_fieldsplit_no_slaves 1 --fail --match "no slave rows to split off" --match "-pc_type gamg" --max-lines 2
+  --absent ${BOLTNET_OUT}/bad_fieldsplit_no_slaves --
+  $<TARGET_FILE:boltnet_driver> -scene ${PROJECT_SOURCE_DIR}/share/scenes/fig3c.yaml -options_file ${BOLTNET_MULTIGRID}
+  -output_dir ${BOLTNET_OUT}/bad_fieldsplit_no_slaves)

@@ -309,10 +309,9 @@ PetscErrorCode AssemblySetSlaveSplit(BoltnetAssembly a, PC pc)
   }
   PetscInt nslave = (PetscInt)is.size(), nslave_global;
   PetscCallMPI(MPI_Allreduce(&nslave, &nslave_global, 1, MPIU_INT, MPI_SUM, a->comm));
-  if (!nslave_global) { // node or penalty coupling, or every patch condensed: PCFIELDSPLIT's own splits
-    PetscCall(PetscInfo(pc, "No slave rows: PCFIELDSPLIT keeps its own splits\n"));
-    PetscFunctionReturn(0);
-  }
+  // Node or penalty coupling, rigid patches alone, or every patch condensed: no slave rows, and
+  // PCFIELDSPLIT's own splits of a DMNetwork fail with a message about the DM's set-up.
+  PetscCheck(nslave_global, a->comm, PETSC_ERR_USER_INPUT, "-pc_type fieldsplit: this model has no slave rows to split off (-interface_slave_split needs shell patches kept whole, -patch_condense false, with -coupling_type exact); use -pc_type gamg, or PCFIELDSPLIT's own splits: -interface_slave_split false -pc_fieldsplit_dm_splits false -pc_fieldsplit_block_size 6");
   IS ism, iss;
   PetscCall(ISCreateGeneral(a->comm, (PetscInt)im.size(), im.data(), PETSC_COPY_VALUES, &ism));
   PetscCall(ISCreateGeneral(a->comm, (PetscInt)is.size(), is.data(), PETSC_COPY_VALUES, &iss));
