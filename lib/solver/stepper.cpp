@@ -284,8 +284,10 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscOptionsEnd();
   PetscCheck(a->checks.equilibrium_rtol > 0 && a->checks.equilibrium_rtol < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_equilibrium_rtol %g must lie in (0, 1)", (double)a->checks.equilibrium_rtol);
   PetscCheck(a->checks.null_pivot_threshold > 0 && a->checks.null_pivot_threshold < 1, a->comm, PETSC_ERR_USER_INPUT, "-load_null_pivot_threshold %g must lie in (0, 1)", (double)a->checks.null_pivot_threshold);
-  {
+  { // -pc_type fieldsplit: boltnet's splits, before PCSetUp (docs/solver.md, "Algebraic multigrid")
     PetscBool fs;
+    PetscCall(SNESGetKSP(a->snes, &ksp));
+    PetscCall(KSPGetPC(ksp, &pc));
     PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
     if (fs && a->opt.slave_split) PetscCall(AssemblySetSlaveSplit(a, pc));
   }
