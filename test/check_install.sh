@@ -15,7 +15,8 @@
 #       an installed scene by its name, and the commands of the README's "Running scenes" block,
 #       read from README.md and moved to the installed paths as docs/install.md says (build/bin/ ->
 #       <prefix>/bin/, scripts/ -> <prefix>/share/boltnet/scripts/, share/scenes/ ->
-#       <prefix>/share/boltnet/scenes/, test/data/identify/ -> <prefix>/share/boltnet/identify/,
+#       <prefix>/share/boltnet/scenes/, share/solvers/ -> <prefix>/share/boltnet/solvers/,
+#       test/data/identify/ -> <prefix>/share/boltnet/identify/,
 #       /tmp/ -> a temporary directory), run from a directory outside the source tree and write
 #       their results and charts.
 #
@@ -141,6 +142,9 @@ for f in plot_joints.py plot_fields.py make-plate-grid; do
   [ -x "$data/scripts/$f" ] || fail "scripts/$f is not installed (executable) in $data/scripts"
 done
 [ -f "$data/scripts/mpienv" ] || fail "scripts/mpienv is not installed in $data/scripts"
+for f in "$root"/share/solvers/*; do
+  [ -f "$data/solvers/$(basename "$f")" ] || fail "share/solvers/$(basename "$f") is not installed in $data/solvers"
+done
 [ -f "$data/identify/cyclic.csv" ] || fail "test/data/identify/cyclic.csv is not installed in $data/identify"
 docdir=$prefix/share/doc/boltnet
 [ -f "$docdir/README.md" ] || fail "README.md is not installed in $docdir"
@@ -174,7 +178,8 @@ awk '/^```sh/ { inblock = 1; block = ""; next }
 sed -e ':a' -e '/\\$/N; s/\\\n */ /; ta' readme-block.txt | sed -e 's/[[:space:]]#.*$//' -e '/^[[:space:]]*#/d' -e '/^[[:space:]]*$/d' |
   sed -E -e "s#(^|[[:space:]])/tmp/#\1$tmp/#g" \
     -e "s#(^|[[:space:]])build/bin/#\1$prefix/bin/#g" -e "s#(^|[[:space:]])scripts/#\1$data/scripts/#g" \
-    -e "s#(^|[[:space:]])share/scenes/#\1$data/scenes/#g" -e "s#(^|[[:space:]])test/data/identify/#\1$data/identify/#g" >readme-commands.sh
+    -e "s#(^|[[:space:]])share/scenes/#\1$data/scenes/#g" -e "s#(^|[[:space:]])share/solvers/#\1$data/solvers/#g" \
+    -e "s#(^|[[:space:]])test/data/identify/#\1$data/identify/#g" >readme-commands.sh
 n=$(wc -l <readme-commands.sh)
 [ "$n" -ge 5 ] || fail "only $n commands in README.md's Running scenes block"
 if grep -n "$root" readme-commands.sh; then fail "a README command names the source tree"; fi
