@@ -96,3 +96,12 @@ boltnet_expect(bad_fieldsplit_no_slaves 1 --fail --match "no slave rows to split
   --absent ${BOLTNET_OUT}/bad_fieldsplit_no_slaves --
   $<TARGET_FILE:boltnet_driver> -scene ${PROJECT_SOURCE_DIR}/share/scenes/fig3c.yaml -options_file ${BOLTNET_MULTIGRID}
   -output_dir ${BOLTNET_OUT}/bad_fieldsplit_no_slaves)
+
+# A cut-back with the split: after a failed step the PC is reset (AssemblyResetPC: PCReset, which
+# keeps PCFIELDSPLIT's splits) and the shorter step solves with it. The same grid without the step
+# tolerance and with 10 Newton iterations a step fails its fourth step, is cut back once, and
+# completes.
+boltnet_expect(plate_grid_small_split_cutback 1 --match "load step 4 did not converge" --match "steps converged \\(1 cut-backs\\)" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_OUT}/grid/small.yaml -options_file ${BOLTNET_MULTIGRID}
+  -snes_stol 0 -snes_max_it 10 -load_max_cuts 2 -output_fields false -output_dir ${BOLTNET_OUT}/plate_grid_small_split_cutback)
+set_tests_properties(plate_grid_small_split_cutback_np1 PROPERTIES FIXTURES_REQUIRED grid_scene)

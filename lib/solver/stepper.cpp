@@ -130,27 +130,24 @@ static PetscErrorCode SetBDDCFields(BoltnetAssembly a, PC pc)
 // A fresh preconditioner for the next solve. PCReset for a factorisation: a failed one leaves
 // MUMPS in an error state that the next solve would raise. BDDC is made anew instead (its type
 // set again, its options read again, its fields given again): in PETSc 3.18.5 a PCSetUp after
-// PCReset on PCBDDC crashes in PCBDDCGraphInit. So is the slave split, whose splits are given
-// before the set-up.
+// PCReset on PCBDDC crashes in PCBDDCGraphInit.
 PetscErrorCode AssemblyResetPC(BoltnetAssembly a)
 {
   KSP       ksp;
   PC        pc;
-  PetscBool bddc, split;
+  PetscBool bddc;
   PetscFunctionBeginUser;
   PetscCall(SNESGetKSP(a->snes, &ksp));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCBDDC, &bddc));
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &split));
-  if (!bddc && !(split && a->opt.slave_split)) {
+  if (!bddc) {
     PetscCall(PCReset(pc));
     PetscFunctionReturn(0);
   }
   PetscCall(PCSetType(pc, PCNONE));
-  PetscCall(PCSetType(pc, bddc ? PCBDDC : PCFIELDSPLIT));
+  PetscCall(PCSetType(pc, PCBDDC));
   PetscCall(PCSetFromOptions(pc));
-  if (bddc) PetscCall(SetBDDCFields(a, pc));
-  else PetscCall(AssemblySetSlaveSplit(a, pc));
+  PetscCall(SetBDDCFields(a, pc));
   PetscFunctionReturn(0);
 }
 
