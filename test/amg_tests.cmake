@@ -105,3 +105,10 @@ boltnet_expect(plate_grid_small_split_cutback 1 --match "load step 4 did not con
   $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_OUT}/grid/small.yaml -options_file ${BOLTNET_MULTIGRID}
   -snes_stol 0 -snes_max_it 10 -load_max_cuts 2 -output_fields false -output_dir ${BOLTNET_OUT}/plate_grid_small_split_cutback)
 set_tests_properties(plate_grid_small_split_cutback_np1 PROPERTIES FIXTURES_REQUIRED grid_scene)
+
+# When a step is not yet converged at round-off, -info names the row the test waits for (the
+# diagnostic that found why Newton stalled with an iterative solve).
+boltnet_expect(plate_grid_small_split_floor_info 1 --match "Not at the round-off floor: row [0-9]+ has" --
+  $<TARGET_FILE:boltnet_driver> -scene ${BOLTNET_OUT}/grid/small.yaml -options_file ${BOLTNET_MULTIGRID}
+  -snes_stol 0 -snes_max_it 10 -load_max_cuts 2 -output_fields false -info :snes -output_dir ${BOLTNET_OUT}/plate_grid_small_split_floor_info)
+set_tests_properties(plate_grid_small_split_floor_info_np1 PROPERTIES FIXTURES_REQUIRED grid_scene)

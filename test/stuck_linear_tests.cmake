@@ -117,7 +117,15 @@ endforeach()
 add_test(NAME bench_plate_grid_solvers_tiny
   COMMAND ${BOLTNET_EXPECT} --match "^\\| 1 \\| MUMPS LU \\(default, condensed\\) \\| [^|]+ \\| converged"
           --match "^\\| 1 \\| MUMPS LU, kept whole \\| [^|]+ \\| converged"
-          --match "^\\| 1 \\| GMRES \\+ BDDC, condensed \\| [^|]+ \\| converged" --match "^\\| 1 \\| GMRES \\+ BDDC, kept whole \\| [^|]+ \\| converged" --match "wrote ${BOLTNET_OUT}/bench-solvers-tiny.md"
+          --match "^\\| 1 \\| GMRES \\+ BDDC, condensed \\| [^|]+ \\| converged" --match "^\\| 1 \\| GMRES \\+ BDDC, kept whole \\| [^|]+ \\| converged"
+          --match "^\\| 1 \\| GMRES \\+ GAMG on the slave split \\| `-options_file share/solvers/multigrid.opts[^|]*` \\| converged" --match "wrote ${BOLTNET_OUT}/bench-solvers-tiny.md"
           -- ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/bench-plate-grid --size tiny --ranks 1 --solvers --timeout 30
           --boltnet $<TARGET_FILE:boltnet_driver> --mpiexec ${MPIEXEC_EXECUTABLE} --out ${BOLTNET_OUT}/bench-solvers-tiny.md)
 set_tests_properties(bench_plate_grid_solvers_tiny PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
+# --rows: the references (rows 0 and 1) and the rows asked for, no others.
+add_test(NAME bench_plate_grid_solvers_rows_tiny
+  COMMAND ${BOLTNET_EXPECT} --match "^\\| 1 \\| MUMPS LU \\(default, condensed\\) \\|" --match "^\\| 1 \\| MUMPS LU, kept whole \\|"
+          --match "^\\| 1 \\| GMRES \\+ GAMG on the slave split \\| [^|]+ \\| converged" --reject "BDDC" --reject "BoomerAMG"
+          -- ${BOLTNET_PYTHON} ${PROJECT_SOURCE_DIR}/scripts/bench-plate-grid --size tiny --ranks 1 --solvers --rows 6 --timeout 30
+          --boltnet $<TARGET_FILE:boltnet_driver> --mpiexec ${MPIEXEC_EXECUTABLE})
+set_tests_properties(bench_plate_grid_solvers_rows_tiny PROPERTIES ENVIRONMENT "${BOLTNET_ENV}")
