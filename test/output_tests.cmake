@@ -62,6 +62,20 @@ foreach(ranks 1 2)
 endforeach()
 add_test(NAME lap_rows_bypass COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_np2 --ref ${BOLTNET_OUT}/lap_rows_np1)
 set_tests_properties(lap_rows_bypass PROPERTIES FIXTURES_REQUIRED "lap_rows_np1;lap_rows_np2")
+# lap-rows' sheets are strips as wide as the rivet pitch (20 mm), loaded at one end: with that strip
+# width each bypass load is the sum of the bearing loads behind its rivet (a free body of the strip),
+# on 1, 2 and 3 ranks, and through fields.h5 on 3. The control: a strip wider than the sheet (24 mm,
+# the default of 6 coupling radii) reads the same running loads over 24 mm, and the check fails.
+foreach(ranks 1 2 3)
+  boltnet_run(lap_rows_strip ${ranks} ${BOLTNET_SCENES}/lap-rows.yaml -output_bypass_width 20)
+  add_test(NAME lap_rows_bypass_strip_np${ranks} COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_strip_np${ranks} --strip ${BOLTNET_SCENES}/lap-rows.joints.csv)
+  set_tests_properties(lap_rows_bypass_strip_np${ranks} PROPERTIES FIXTURES_REQUIRED lap_rows_strip_np${ranks})
+endforeach()
+add_test(NAME lap_rows_bypass_strip_h5 COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_strip_np3 --h5 --ref ${BOLTNET_OUT}/lap_rows_strip_np1)
+set_tests_properties(lap_rows_bypass_strip_h5 PROPERTIES FIXTURES_REQUIRED "lap_rows_strip_np1;lap_rows_strip_np3")
+add_test(NAME lap_rows_bypass_strip_too_wide COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_bypass.py ${BOLTNET_OUT}/lap_rows_np1 --strip ${BOLTNET_SCENES}/lap-rows.joints.csv)
+set_tests_properties(lap_rows_bypass_strip_too_wide PROPERTIES FIXTURES_REQUIRED lap_rows_np1
+  PASS_REGULAR_EXPRESSION "FAIL: step 1 joint [0-9]+ on part [0-9]+: bypass [-0-9.e]+, the strip.s balance")
 # The same bypass in fields.h5, each rank writing its own joints' rows: the strip's closed form on 1,
 # 2 and 3 ranks, and lap-rows on 3 ranks with the joint table in joints.h5, where no bypass.csv is
 # written (a model that large gets no table through rank 0), against the 1-rank run's bypass.csv.

@@ -321,35 +321,42 @@ PetscErrorCode WriteXdmf(const FieldsFile &ff)
 PetscErrorCode OwnedBypass(BoltnetAssembly a, FieldsFile *ff, const StepFields &f, std::vector<BypassRow> &mine)
 {
   PetscFunctionBeginUser;
-  if (ff->map.bypass_width == 0) PetscCall(FieldMapBypassRegions(a, ff->map, ff->opt.bypass_width > 0 ? ff->opt.bypass_width : 6 * a->opt.coupling_radius));
+  if (ff->map.bypass_width == 0) {
+    const double w = ff->opt.bypass_width > 0 ? ff->opt.bypass_width : 6 * a->opt.coupling_radius;
+    PetscCall(FieldMapBypassRegions(a, ff->map, w, ff->opt.bypass_length > 0 ? ff->opt.bypass_length : w / 2));
+  }
   PetscCall(AssemblyBypass(a, ff->map, f, mine));
   PetscFunctionReturn(0);
 }
 
 // The bypass of the step's joints into the joints group of fields.h5, every rank its own rows, in
-// the joints' natural order: per joint and side (a, b) the bypass load, flux, averaged running load
-// n_avg, the bearing load and the elements averaged; NaN (0 elements) for a side on a rigid part.
+// the joints' natural order: per joint and side (a, b) the bypass load, flux, incoming running load,
+// the bands' balance, the bearing load and the elements averaged; NaN (0 elements) for a side on a
+// rigid part.
 // Collective.
 PetscErrorCode WriteBypassFields(BoltnetAssembly a, FieldsFile *ff, const std::vector<BypassRow> &mine)
 {
   PetscFunctionBeginUser;
   const size_t        nj = a->joints.size();
-  std::vector<double> load(2 * nj, NAN), flux(2 * nj, NAN), navg(2 * nj, NAN), bearing(2 * nj, NAN), elements(2 * nj, 0);
+  std::vector<double> load(2 * nj, NAN), flux(2 * nj, NAN), nin(2 * nj, NAN), balance(2 * nj, NAN), bearing(2 * nj, NAN), elements(2 * nj, 0);
   std::map<PetscInt, size_t> at; // joint id -> position in JointSet order
   for (size_t k = 0; k < nj; ++k) at[a->joints.comp[k].id] = k;
   for (const BypassRow &b : mine) {
     const size_t i = 2 * at.at(b.joint) + (size_t)b.side;
     load[i]        = b.load;
     flux[i]        = b.flux;
-    navg[i]        = b.n_avg;
+    nin[i]         = b.n_in;
+    balance[i]     = b.balance;
     bearing[i]     = b.bearing;
     elements[i]    = (double)b.elements;
   }
   std::vector<double> rows;
-  rows.reserve(10 * nj);
+  rows.reserve(12 * nj);
   for (size_t k = 0; k < nj; ++k)
-    for (const auto *col : {&load, &flux, &navg, &bearing, &elements}) rows.insert(rows.end(), {(*col)[2 * k], (*col)[2 * k + 1]});
-  PetscCall(WritePacked(a->comm, ff->viewer, ff->map.joints, {{"bypass_load", 2, Column::Real}, {"bypass_flux", 2, Column::Real}, {"bypass_n_avg", 2, Column::Real}, {"bypass_bearing", 2, Column::Real}, {"bypass_elements", 2, Column::Int}}, rows));
+    for (const auto *col : {&load, &flux, &nin, &balance, &bearing, &elements}) rows.insert(rows.end(), {(*col)[2 * k], (*col)[2 * k + 1]});
+  PetscCall(WritePacked(a->comm, ff->viewer, ff->map.joints,
+                        {{"bypass_load", 2, Column::Real}, {"bypass_flux", 2, Column::Real}, {"bypass_n_incoming", 2, Column::Real}, {"bypass_balance", 2, Column::Real}, {"bypass_bearing", 2, Column::Real}, {"bypass_elements", 2, Column::Int}},
+                        rows));
   PetscFunctionReturn(0);
 }
 
@@ -362,12 +369,12 @@ PetscErrorCode WriteBypass(FieldsFile *ff, const StepInfo &info, std::vector<Byp
   if (!ff->bypass) {
     ff->bypass = std::fopen(path.c_str(), "w");
     PetscCheck(ff->bypass, PETSC_COMM_SELF, PETSC_ERR_FILE_OPEN, "Cannot write %s: %s", path.c_str(), std::strerror(errno));
-    std::fprintf(ff->bypass, "step,load,joint,sheet,part,bearing,dx,dy,dz,n_avg,width,bypass_flux,bypass_load,elements\n");
+    std::fprintf(ff->bypass, "step,load,joint,sheet,part,bearing,dx,dy,dz,width,length,n_incoming,bypass_flux,bypass_load,balance,elements\n");
   }
   errno = 0;
   bool ok = true;
   for (const BypassRow &b : all)
-    ok = ok && std::fprintf(ff->bypass, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT "\n", info.step, (double)info.load, b.joint, b.side ? "b" : "a", b.part, b.bearing, b.d[0], b.d[1], b.d[2], b.n_avg, b.width, b.flux, b.load, b.elements) >= 0;
+    ok = ok && std::fprintf(ff->bypass, "%" PetscInt_FMT ",%.17g,%" PetscInt_FMT ",%s,%" PetscInt_FMT ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%" PetscInt_FMT "\n", info.step, (double)info.load, b.joint, b.side ? "b" : "a", b.part, b.bearing, b.d[0], b.d[1], b.d[2], b.width, b.length, b.n_in, b.flux, b.load, b.balance, b.elements) >= 0;
   PetscCheck(ok && std::fflush(ff->bypass) == 0, PETSC_COMM_SELF, PETSC_ERR_FILE_WRITE, "Cannot write %s: %s", path.c_str(), std::strerror(errno));
   PetscFunctionReturn(0);
 }
@@ -384,6 +391,8 @@ PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject
   PetscCall(PetscOptionsBool("-output_stresses_cache", "Keep each element's condensed modes (776 bytes an element) from the second step on, so that later steps' element results do not integrate the elements again; false saves the memory", "", o->results_cache, &o->results_cache, nullptr));
   PetscCall(PetscOptionsReal("-output_bypass_width", "Width w (mm) of the strip whose force balance gives the bypass load (bypass.csv, fields.h5); 0: 6 -coupling_radius", "", o->bypass_width, &o->bypass_width, nullptr));
   PetscCheck(o->bypass_width >= 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-output_bypass_width %g: a width must be positive (or 0 for the default)", (double)o->bypass_width);
+  PetscCall(PetscOptionsReal("-output_bypass_length", "Length L (mm) along the load of the bands on each side of a fastener whose running loads give the incoming and the bypass load: elements beyond the footprint that begin within L; keep it short of the next fastener (half a row spacing); 0: w / 2", "", o->bypass_length, &o->bypass_length, nullptr));
+  PetscCheck(o->bypass_length >= 0, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "-output_bypass_length %g: a length must be positive (or 0 for the default)", (double)o->bypass_length);
   PetscCall(PetscOptionsBool("-output_fields_gather", "Write the fields from rank 0 after gathering them (the former writer, kept to measure against; displacements only)", "", o->gather, &o->gather, nullptr));
   PetscFunctionReturn(0);
 }
@@ -426,6 +435,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
   if (withBypass) PetscCall(WriteBypassFields(a, ff, bypass));
   PetscCall(PetscViewerHDF5PopGroup(v));
   if (withBypass) PetscCall(PetscViewerHDF5WriteAttribute(v, (g + "/joints").c_str(), "bypass_width", PETSC_REAL, &ff->map.bypass_width));
+  if (withBypass) PetscCall(PetscViewerHDF5WriteAttribute(v, (g + "/joints").c_str(), "bypass_length", PETSC_REAL, &ff->map.bypass_length));
   PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "load", PETSC_REAL, &info.load));
   PetscCall(PetscViewerHDF5WriteAttribute(v, g.c_str(), "step", PETSC_INT, &info.step));
   PetscCall(PetscViewerFlush(v));

@@ -77,6 +77,7 @@ struct FieldsOptions {
   PetscBool results_cache = PETSC_TRUE; // -output_stresses_cache: keep each element's condensed modes
   PetscBool gather  = PETSC_FALSE; // -output_fields_gather: the writer that gathers to rank 0
   PetscReal bypass_width = 0;      // -output_bypass_width (mm); 0: 6 -coupling_radius (3 diameters)
+  PetscReal bypass_length = 0;     // -output_bypass_length (mm); 0: half the width
 };
 struct FieldsFile {
   std::string   dir, scene;
@@ -95,7 +96,7 @@ PetscErrorCode FieldsWriteStep(BoltnetAssembly a, FieldsFile *ff, const StepInfo
 // Rank 0 only: the same from the fields gathered to rank 0 (io/fields_gather.cpp).
 PetscErrorCode FieldsWriteStepGather(FieldsFile *ff, const StepInfo &info, const std::vector<PartField> &parts, const std::vector<JointLine> &lines);
 PetscErrorCode FieldsClose(FieldsFile *ff);
-// Reads -output_fields, -output_stresses, -output_bypass_width, -output_fields_gather (inside the
+// Reads -output_fields, -output_stresses, -output_bypass_width, -output_bypass_length, -output_fields_gather (inside the
 // caller's PetscOptionsBegin/End, so that -help lists them).
 PetscErrorCode FieldsOptionsFromCommandLine(PetscOptionItems *PetscOptionsObject, FieldsOptions *o);
 // The group of fields.h5 that holds a step's fields ("/steps/000012"): a restart drops those after

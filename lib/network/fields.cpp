@@ -169,6 +169,9 @@ PetscErrorCode FieldMapDestroy(FieldMap *m)
   PetscCall(VecScatterDestroy(&m->bypass_scatter));
   PetscCall(VecDestroy(&m->bypass_sums));
   PetscCall(VecDestroy(&m->bypass_local));
+  PetscCall(VecScatterDestroy(&m->bypass_force_scatter));
+  PetscCall(VecDestroy(&m->bypass_force));
+  PetscCall(VecDestroy(&m->bypass_force_local));
   *m = FieldMap{};
   PetscFunctionReturn(0);
 }

@@ -56,12 +56,24 @@ struct FieldMap {
   std::map<PetscInt, PetscInt>       ghost_index;      //   and their positions
   VecScatter                         ghost_scatter = nullptr; // natural (block 6) -> ghosts
   Vec                                ghost_dof = nullptr;     // 6 per ghost node
-  // Bypass (network/fields_bypass.cpp): (owned element, slot 2 joint index + side) of each element
-  // in the averaging region of a joint's side, and the scatter of the sums to the joints' ranks.
-  double                               bypass_width = 0;
-  std::vector<std::array<PetscInt, 2>> bypass_members;
-  VecScatter                           bypass_scatter = nullptr;
-  Vec                                  bypass_sums = nullptr, bypass_local = nullptr;
+  // Bypass (network/fields_bypass.cpp): the joint sides whose bands may hold this rank's elements
+  // (slot: 2 joint index + side), the elements that may lie in them, the scatter of each step's
+  // fastener forces to this rank and of the band sums to the joints' ranks.
+  struct BypassSide {
+    PetscInt                           slot;
+    std::array<double, 3>              t1, t2;    // the joint's in-plane axes
+    std::vector<std::array<double, 2>> footprint; // its footprint's nodes (t1, t2 from the fastener), when this rank has them
+  };
+  struct BypassMember {
+    PetscInt                            elem, side; // owned element, position in bypass_sides
+    int                                 nn;
+    std::array<std::array<double, 2>, 4> p;         // the element's nodes (t1, t2 from the fastener)
+  };
+  double                    bypass_width = 0, bypass_length = 0;
+  std::vector<BypassSide>   bypass_sides;
+  std::vector<BypassMember> bypass_members;
+  VecScatter                bypass_scatter = nullptr, bypass_force_scatter = nullptr;
+  Vec                       bypass_sums = nullptr, bypass_local = nullptr, bypass_force = nullptr, bypass_force_local = nullptr;
 };
 
 // Collective. The map of the assembly's shell output (nothing to write when part_ids is empty).
@@ -113,13 +125,16 @@ PetscErrorCode AssemblyStepFields(BoltnetAssembly a, FieldMap &m, bool results, 
 // The bypass load beside each fastener (docs/output.md, "Bypass"), one row per joint side on a shell
 // part, for the joints this rank owns.
 struct BypassRow {
-  PetscInt joint, side, part, elements; // side 0: patch a, 1: patch b; elements averaged
-  double   bearing;                     // |in-plane force of the fastener on the sheet| (N)
-  double   d[3];                        // its direction (global), t1 when it is zero
-  double   n_avg, width, flux, load;    // d.N.d averaged (N/mm), w (mm), bypass flux (N/mm), flux w (N)
+  PetscInt joint, side, part, elements; // side 0: patch a, 1: patch b; elements averaged (both bands)
+  double   bearing;                     // |in-plane force between the fastener and the sheet| (N)
+  double   d[3];                        // the direction the sheet bears on the fastener (global), t1 when it is zero
+  double   width, length;               // the bands: w across d, L along it (mm)
+  double   n_in, flux, load;            // d.N.d of the loaded band and of the bypass band (N/mm), flux w (N)
+  double   balance;                     // (n_+ - n_-) w - bearing (N): the bands' force balance, NaN with one band
 };
-// Collective. The averaging regions (once, width w in mm) and each step's rows from f's results.
-PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width);
+// Collective. The bands' candidate elements (once: width w, length L in mm) and each step's rows
+// from f's results.
+PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width, double length);
 PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &f, std::vector<BypassRow> &rows);
 
 // The material frame of an owned element (the section law's, resultants.hpp).

@@ -1,13 +1,21 @@
 // The bypass load beside each fastener (network/fields.hpp, docs/output.md "Bypass"): the force
-// balance of bearing-bypass analysis on a strip of width w through the fastener, in the direction of
-// the fastener's in-plane load d on the sheet,
-//   P_incoming = P_bypass + P_bearing,  with the element-averaged running load
-//   n_avg = (n_incoming + n_bypass) / 2  =>  n_bypass = sign(n_avg) (|n_avg| - P_bearing / (2 w)),
-// n_avg the area-weighted mean of d.N.d over the elements of the sheet whose centroid lies within
-// w / 2 of the fastener axis (the footprint's rigid elements left out). P_bypass = n_bypass w.
+// balance of bearing-bypass analysis (Crews and Naik, Composite Structures 6, 1986) on a strip of
+// width w through the fastener, along the direction d in which the sheet bears on the fastener with
+// the in-plane force P (the fastener pushes the sheet with -P d).
+// The running load d.N.d is averaged over two bands of the strip, one on each side of the fastener:
+// the elements of the sheet whose centroid lies within w / 2 of the line through the fastener along
+// d and beyond the footprint's extent along d (a section through the footprint, where the
+// coupling's forces act, does not carry its force in the elements' N), and that begin within L of
+// the fastener. Between the
+// footprint and the next fastener no load enters the strip, so each band's mean is its section's
+// force per width: n_+ ahead of the fastener (along d), n_- behind it, and a free body gives
+//   (n_+ - n_-) w = P.
+// The band with the smaller |n| is the bypass (the load that passes the hole), the other the
+// incoming load; a band with no element is taken from the balance. P_bypass = n_bypass w.
 // Elements and joints may sit on different ranks: each rank owns its joints only (network/build.cpp),
 // so it sends each joint side to the ranks whose elements of that part come near it (NearbySides);
-// each rank adds its elements' sums into a Vec laid out by joint, scattered to the joints' owners.
+// each step, the fastener forces go from the joints' ranks to the elements' (a VecScatter), each rank
+// adds its elements' band sums into a Vec laid out by joint, and that Vec is scattered back.
 #include "core/guard.hpp"
 #include "network/fields.hpp"
 #include "network/internal.hpp"
@@ -20,13 +28,13 @@
 namespace boltnet {
 namespace {
 
-constexpr int kSums = 8; // area * N (xx yy zz xy yz xz, global), area, element count
+constexpr int kSums = 6; // per band (ahead, behind): area * d.N.d, area, element count
 
 // A joint side on a shell part: its part, slot, fastener position and axis. Plain data: it travels
 // between ranks as bytes.
 struct Side {
   PetscInt               part, slot, pos, node; // pos: the patch (layout position), node: the joint node there
-  std::array<double, 3> x, n;
+  std::array<double, 3> x, n, t1, t2;          // the fastener's position and axes (JointComp::R)
 };
 
 double Dot(const std::array<double, 3> &a, const std::array<double, 3> &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -74,7 +82,7 @@ PetscErrorCode NearbySides(BoltnetAssembly a, const FieldMap &m, double margin, 
     for (int s = 0; s < 2; ++s) {
       const PetscInt pos = s ? j.vb : j.va;
       if (!a->layout.shells.count(pos)) continue;
-      const Side sd{s ? j.patch_b : j.patch_a, 2 * j.index + s, pos, s ? j.pnode_b : j.pnode_a, {j.x[0], j.x[1], j.x[2]}, {j.R[0], j.R[1], j.R[2]}};
+      const Side sd{s ? j.patch_b : j.patch_a, 2 * j.index + s, pos, s ? j.pnode_b : j.pnode_a, {j.x[0], j.x[1], j.x[2]}, {j.R[0], j.R[1], j.R[2]}, {j.R[3], j.R[4], j.R[5]}, {j.R[6], j.R[7], j.R[8]}};
       auto [lo, hi] = boxes.equal_range(sd.part);
       for (auto it = lo; it != hi; ++it) {
         const double *b    = it->second.second;
@@ -98,24 +106,46 @@ PetscErrorCode NearbySides(BoltnetAssembly a, const FieldMap &m, double margin, 
 
 } // namespace
 
-PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width)
+// The farthest a point set reaches along (d0, d1) in the joint's plane (0 for none: the fastener).
+double Extent(const std::vector<std::array<double, 2>> &pts, double d0, double d1)
+{
+  double e = 0;
+  for (const auto &p : pts) e = std::max(e, p[0] * d0 + p[1] * d1);
+  return e;
+}
+
+PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width, double length)
 {
   MPI_Comm comm = a->comm;
   PetscFunctionBeginUser;
   m.bypass_width     = width;
+  m.bypass_length    = length;
   const double reach = a->opt.coupling_reach > 0 ? a->opt.coupling_reach : 4 * a->opt.coupling_radius;
-  const double h     = std::max(width / 2, reach); // bucket size: a region spans its neighbours only
+  // A band holds centroids within w / 2 across d and elements that begin within L along it, so its
+  // elements' centroids lie within span of the fastener in the plane, rho being the largest distance
+  // of an element's node from its centroid (over all ranks: the margin of NearbySides).
+  double rho = 0;
+  for (const FieldElement &e : m.elements) {
+    const std::array<double, 3> c = Centroid(e);
+    for (int i = 0; i < e.nn; ++i) {
+      const std::array<double, 3> v = {e.geom.X[i][0] - c[0], e.geom.X[i][1] - c[1], e.geom.X[i][2] - c[2]};
+      rho                           = std::max(rho, std::sqrt(Dot(v, v)));
+    }
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &rho, 1, MPI_DOUBLE, MPI_MAX, comm));
+  const double span = 1.000001 * (std::hypot(width / 2, length) + rho);
+  const double h    = std::max(span, reach); // bucket size: a band spans its neighbours only
   // The joint sides of each shell part, bucketed by position.
   using Key = std::array<long long, 3>;
   auto key  = [h](const std::array<double, 3> &x) { return Key{(long long)std::floor(x[0] / h), (long long)std::floor(x[1] / h), (long long)std::floor(x[2] / h)}; };
   auto hash = [](const Key &k) { return std::hash<long long>()(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL); };
   std::vector<Side> near;
-  // A region's centroid is within reach along the axis and width / 2 across it: within this of x.
-  PetscCall(NearbySides(a, m, 1.000001 * std::sqrt(reach * reach + width * width / 4), &near));
+  PetscCall(NearbySides(a, m, std::hypot(reach, span), &near));
   std::map<PetscInt, std::unordered_map<Key, std::vector<Side>, decltype(hash)>> sides;
   for (const Side &sd : near) sides.try_emplace(sd.part, 16, hash).first->second[key(sd.x)].push_back(sd);
+  std::map<PetscInt, size_t> where; // slot -> position in m.bypass_sides
   for (size_t k = 0; k < m.elements.size(); ++k) {
-    const FieldElement &e  = m.elements[k];
+    const FieldElement &e   = m.elements[k];
     const PetscInt      pos = a->patches.owned[e.owned].index;
     auto                it  = sides.find(e.part);
     if (it == sides.end()) continue;
@@ -129,16 +159,32 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
           for (const Side &sd : b->second) {
             const std::array<double, 3> v = {c[0] - sd.x[0], c[1] - sd.x[1], c[2] - sd.x[2]};
             const double                ax = Dot(v, sd.n), r2 = Dot(v, v) - ax * ax;
-            if (std::fabs(ax) > reach || r2 > width * width / 4) continue;
+            if (std::fabs(ax) > reach || r2 > span * span) continue;
             // The footprint's own elements move rigidly with the fastener (exact coupling): no load there.
-            const ShellPatch &sp = a->layout.shells.at(sd.pos);
-            if (pos == sd.pos && sd.node >= (PetscInt)sp.mesh.x.size()) {
-              const auto &fp    = sp.joint_nodes[sd.node - sp.mesh.x.size()].footprint;
+            const ShellPatch *sp = pos == sd.pos ? &a->layout.shells.at(sd.pos) : nullptr;
+            const bool        fp = sp && sd.node >= (PetscInt)sp->mesh.x.size();
+            if (fp) {
+              const auto &nodes = sp->joint_nodes[sd.node - sp->mesh.x.size()].footprint;
               bool        rigid = true;
-              for (int i = 0; i < e.nn; ++i) rigid = rigid && e.local[i] >= 0 && std::binary_search(fp.begin(), fp.end(), e.local[i]);
+              for (int i = 0; i < e.nn; ++i) rigid = rigid && e.local[i] >= 0 && std::binary_search(nodes.begin(), nodes.end(), e.local[i]);
               if (rigid) continue;
             }
-            m.bypass_members.push_back({(PetscInt)k, sd.slot});
+            auto [at, fresh] = where.try_emplace(sd.slot, m.bypass_sides.size());
+            if (fresh) m.bypass_sides.push_back({sd.slot, sd.t1, sd.t2, {}});
+            FieldMap::BypassSide &bs = m.bypass_sides[at->second];
+            // The footprint's nodes, where its extent along d is known: on the ranks holding its patch.
+            if (fp && bs.footprint.empty())
+              for (PetscInt i : sp->joint_nodes[sd.node - sp->mesh.x.size()].footprint) {
+                const auto                 &X = sp->mesh.x[i];
+                const std::array<double, 3> u = {X[0] - sd.x[0], X[1] - sd.x[1], X[2] - sd.x[2]};
+                bs.footprint.push_back({Dot(u, sd.t1), Dot(u, sd.t2)});
+              }
+            FieldMap::BypassMember mb{(PetscInt)k, (PetscInt)at->second, e.nn, {}};
+            for (int i = 0; i < e.nn; ++i) {
+              const std::array<double, 3> u = {e.geom.X[i][0] - sd.x[0], e.geom.X[i][1] - sd.x[1], e.geom.X[i][2] - sd.x[2]};
+              mb.p[i]                       = {Dot(u, sd.t1), Dot(u, sd.t2)};
+            }
+            m.bypass_members.push_back(mb);
           }
         }
   }
@@ -154,6 +200,18 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
   PetscCall(VecScatterCreate(m.bypass_sums, from, m.bypass_local, to, &m.bypass_scatter));
   PetscCall(ISDestroy(&from));
   PetscCall(ISDestroy(&to));
+  // Each sheet's in-plane force on the fastener (f_t1, f_t2: 2 per slot, 4 per joint, natural order),
+  // scattered to the ranks whose elements may lie in the side's bands.
+  const PetscInt nb = (PetscInt)m.bypass_sides.size();
+  PetscCall(VecCreateMPI(comm, 4 * m.joints.nlocal, 4 * m.joints.nglobal, &m.bypass_force));
+  PetscCall(VecCreateSeq(PETSC_COMM_SELF, 2 * nb, &m.bypass_force_local));
+  idx.clear();
+  for (const auto &bs : m.bypass_sides) idx.push_back(bs.slot);
+  PetscCall(ISCreateBlock(PETSC_COMM_SELF, 2, nb, idx.data(), PETSC_COPY_VALUES, &from));
+  PetscCall(ISCreateStride(PETSC_COMM_SELF, 2 * nb, 0, 1, &to));
+  PetscCall(VecScatterCreate(m.bypass_force, from, m.bypass_force_local, to, &m.bypass_force_scatter));
+  PetscCall(ISDestroy(&from));
+  PetscCall(ISDestroy(&to));
   PetscFunctionReturn(0);
 }
 
@@ -161,44 +219,80 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
 {
   PetscFunctionBeginUser;
   rows.clear();
-  PetscCall(VecSet(m.bypass_sums, 0.0));
-  for (const auto &[k, slot] : m.bypass_members) {
-    const shell::SectionResults &r = f.results[k];
-    const FieldElement          &e = m.elements[k];
-    const double                 area = ElementArea(e.geom);
-    // N in global components: Nxx e1 e1 + Nyy e2 e2 + Nxy (e1 e2 + e2 e1).
-    auto         T    = [&](int i, int j) { return r.N[0] * r.e1[i] * r.e1[j] + r.N[1] * r.e2[i] * r.e2[j] + r.N[2] * (r.e1[i] * r.e2[j] + r.e2[i] * r.e1[j]); };
-    PetscScalar  v[kSums] = {area * T(0, 0), area * T(1, 1), area * T(2, 2), area * T(0, 1), area * T(1, 2), area * T(0, 2), area, 1};
-    PetscInt     idx[kSums];
-    for (int c = 0; c < kSums; ++c) idx[c] = kSums * slot + c;
-    PetscCall(VecSetValues(m.bypass_sums, kSums, idx, v, ADD_VALUES));
+  // The in-plane force of each sheet on the fastener: +f on patch b's node, -f on patch a's.
+  auto force = [&](size_t k, int side) {
+    const Response &re   = a->joints.accepted[k];
+    const double    sign = side ? 1 : -1;
+    return std::array<double, 2>{sign * re.force[1], sign * re.force[2]};
+  };
+  for (size_t k = 0; k < a->joints.size(); ++k) {
+    const JointComp &j = a->joints.comp[k];
+    for (int side = 0; side < 2; ++side) {
+      const std::array<double, 2> fs  = force(k, side);
+      const PetscInt              i[2] = {2 * (2 * j.index + side), 2 * (2 * j.index + side) + 1};
+      PetscCall(VecSetValues(m.bypass_force, 2, i, fs.data(), INSERT_VALUES));
+    }
   }
+  PetscCall(VecAssemblyBegin(m.bypass_force));
+  PetscCall(VecAssemblyEnd(m.bypass_force));
+  PetscCall(VecScatterBegin(m.bypass_force_scatter, m.bypass_force, m.bypass_force_local, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(m.bypass_force_scatter, m.bypass_force, m.bypass_force_local, INSERT_VALUES, SCATTER_FORWARD));
+
+  // Each element in a band adds its area-weighted d.N.d to its band: ahead (0) or behind (1).
+  const double w = m.bypass_width, L = m.bypass_length, tol = 1e-9 * (w + L);
+  PetscCall(VecSet(m.bypass_sums, 0.0));
+  const PetscScalar *fl;
+  PetscCall(VecGetArrayRead(m.bypass_force_local, &fl));
+  for (const FieldMap::BypassMember &mb : m.bypass_members) {
+    const FieldMap::BypassSide &bs = m.bypass_sides[mb.side];
+    const double                f1 = fl[2 * mb.side], f2 = fl[2 * mb.side + 1], P = std::hypot(f1, f2);
+    const double                d0 = P > 0 ? f1 / P : 1, d1 = P > 0 ? f2 / P : 0;
+    double                      amin = INFINITY, amax = -INFINITY, along = 0, across = 0; // along, across: the centroid's
+    for (int i = 0; i < mb.nn; ++i) {
+      const double a = mb.p[i][0] * d0 + mb.p[i][1] * d1;
+      amin = std::min(amin, a), amax = std::max(amax, a);
+      along += a / mb.nn;
+      across += (-mb.p[i][0] * d1 + mb.p[i][1] * d0) / mb.nn;
+    }
+    if (std::fabs(across) > w / 2) continue;
+    int band;
+    if (along >= Extent(bs.footprint, d0, d1) - tol && amin <= L) band = 0;
+    else if (along <= -Extent(bs.footprint, -d0, -d1) + tol && -amax <= L) band = 1;
+    else continue;
+    const shell::SectionResults &r    = f.results[mb.elem];
+    const double                 area = ElementArea(m.elements[mb.elem].geom);
+    std::array<double, 3>        d;
+    for (int c = 0; c < 3; ++c) d[c] = d0 * bs.t1[c] + d1 * bs.t2[c];
+    const double e1 = d[0] * r.e1[0] + d[1] * r.e1[1] + d[2] * r.e1[2], e2 = d[0] * r.e2[0] + d[1] * r.e2[1] + d[2] * r.e2[2];
+    const PetscScalar v[3] = {area * (r.N[0] * e1 * e1 + r.N[1] * e2 * e2 + 2 * r.N[2] * e1 * e2), area, 1};
+    PetscInt          idx[3];
+    for (int c = 0; c < 3; ++c) idx[c] = kSums * bs.slot + 3 * band + c;
+    PetscCall(VecSetValues(m.bypass_sums, 3, idx, v, ADD_VALUES));
+  }
+  PetscCall(VecRestoreArrayRead(m.bypass_force_local, &fl));
   PetscCall(VecAssemblyBegin(m.bypass_sums));
   PetscCall(VecAssemblyEnd(m.bypass_sums));
   PetscCall(VecScatterBegin(m.bypass_scatter, m.bypass_sums, m.bypass_local, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(m.bypass_scatter, m.bypass_sums, m.bypass_local, INSERT_VALUES, SCATTER_FORWARD));
   const PetscScalar *s;
   PetscCall(VecGetArrayRead(m.bypass_local, &s));
-  const double w = m.bypass_width;
   for (size_t k = 0; k < a->joints.size(); ++k) {
     const JointComp &j = a->joints.comp[k];
-    const Response  &re = a->joints.accepted[k];
     for (int side = 0; side < 2; ++side) {
       if (!a->layout.shells.count(side ? j.vb : j.va)) continue;
-      const PetscScalar *q = s + (2 * k + side) * kSums;
-      BypassRow          b{j.id, side, side ? j.patch_b : j.patch_a, (PetscInt)q[7], 0, {0, 0, 0}, NAN, w, NAN, NAN};
-      // The fastener's in-plane force on this sheet: +f on patch b's node, -f on patch a's.
-      const double sign = side ? 1 : -1, f1 = sign * re.force[1], f2 = sign * re.force[2];
-      b.bearing         = std::hypot(f1, f2);
-      for (int c = 0; c < 3; ++c) b.d[c] = b.bearing > 0 ? (f1 * j.R[3 + c] + f2 * j.R[6 + c]) / b.bearing : j.R[3 + c];
-      if (q[6] > 0) {
-        const double N[3][3] = {{q[0], q[3], q[5]}, {q[3], q[1], q[4]}, {q[5], q[4], q[2]}};
-        double       ndd     = 0;
-        for (int i = 0; i < 3; ++i)
-          for (int l = 0; l < 3; ++l) ndd += b.d[i] * N[i][l] * b.d[l];
-        b.n_avg = ndd / q[6];
-        b.flux  = std::copysign(std::fabs(b.n_avg) - b.bearing / (2 * w), b.n_avg);
-        b.load  = b.flux * w;
+      const PetscScalar          *q  = s + (2 * k + side) * kSums;
+      const std::array<double, 2> fs = force(k, side);
+      BypassRow                   b{j.id, side, side ? j.patch_b : j.patch_a, (PetscInt)(q[2] + q[5]), std::hypot(fs[0], fs[1]), {0, 0, 0}, w, L, NAN, NAN, NAN, NAN};
+      for (int c = 0; c < 3; ++c) b.d[c] = b.bearing > 0 ? (fs[0] * j.R[3 + c] + fs[1] * j.R[6 + c]) / b.bearing : j.R[3 + c];
+      double ahead = q[1] > 0 ? q[0] / q[1] : NAN, behind = q[4] > 0 ? q[3] / q[4] : NAN;
+      if (!std::isnan(ahead) || !std::isnan(behind)) {
+        if (!std::isnan(ahead) && !std::isnan(behind)) b.balance = (ahead - behind) * w - b.bearing;
+        if (std::isnan(ahead)) ahead = behind + b.bearing / w;
+        if (std::isnan(behind)) behind = ahead - b.bearing / w;
+        const bool by_ahead = std::fabs(ahead) <= std::fabs(behind);
+        b.flux              = by_ahead ? ahead : behind;
+        b.n_in              = by_ahead ? behind : ahead;
+        b.load              = b.flux * w;
       }
       rows.push_back(b);
     }

@@ -154,6 +154,7 @@ def write(out, name, a, part_info, fasteners, bcs, types_yaml, mats, model, rigi
                     "    pressurised-flight:   # ... then held while the wing goes through its load path\n"
                     "      loads: wing\n      continues: pressurise\n")
         f.write(f"output:\n  bypass_width: {_num(bypass_width(fasteners))}   # the skin splices' pitch along a row: each fastener's "
-                f"bypass load is its strip's (docs/output.md, \"Bypass\")\n")
+                f"bypass load is its strip's (docs/output.md, \"Bypass\")\n"
+                f"  bypass_length: {_num(a.row_spacing_skin / 2)}   # half the row spacing: each band ends short of the next row\n")
     with open(base + ".model.json", "w") as f:
         json.dump({k: v for k, v in model.items() if k != "yaml_header"}, f, indent=1)
