@@ -172,6 +172,8 @@ PetscErrorCode FieldMapDestroy(FieldMap *m)
   PetscCall(VecScatterDestroy(&m->bypass_force_scatter));
   PetscCall(VecDestroy(&m->bypass_force));
   PetscCall(VecDestroy(&m->bypass_force_local));
+  PetscCall(VecDestroy(&m->bypass_reach));
+  PetscCall(VecDestroy(&m->bypass_reach_local));
   *m = FieldMap{};
   PetscFunctionReturn(0);
 }

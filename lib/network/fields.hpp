@@ -62,7 +62,7 @@ struct FieldMap {
   struct BypassSide {
     PetscInt                           slot;
     std::array<double, 3>              t1, t2;    // the joint's in-plane axes
-    std::vector<std::array<double, 2>> footprint; // its footprint's nodes (t1, t2 from the fastener), when this rank has them
+    std::vector<std::array<double, 2>> footprint; // its footprint's nodes (t1, t2 from the fastener), on the rank holding them
   };
   struct BypassMember {
     PetscInt                            elem, side; // owned element, position in bypass_sides
@@ -72,8 +72,9 @@ struct FieldMap {
   double                    bypass_width = 0, bypass_length = 0;
   std::vector<BypassSide>   bypass_sides;
   std::vector<BypassMember> bypass_members;
-  VecScatter                bypass_scatter = nullptr, bypass_force_scatter = nullptr;
+  VecScatter                bypass_scatter = nullptr, bypass_force_scatter = nullptr; // the second also for the reach
   Vec                       bypass_sums = nullptr, bypass_local = nullptr, bypass_force = nullptr, bypass_force_local = nullptr;
+  Vec                       bypass_reach = nullptr, bypass_reach_local = nullptr; // the footprint's reach ahead and behind
 };
 
 // Collective. The map of the assembly's shell output (nothing to write when part_ids is empty).

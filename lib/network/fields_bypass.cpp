@@ -143,7 +143,8 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
   PetscCall(NearbySides(a, m, std::hypot(reach, span), &near));
   std::map<PetscInt, std::unordered_map<Key, std::vector<Side>, decltype(hash)>> sides;
   for (const Side &sd : near) sides.try_emplace(sd.part, 16, hash).first->second[key(sd.x)].push_back(sd);
-  std::map<PetscInt, size_t> where; // slot -> position in m.bypass_sides
+  std::map<PetscInt, size_t> where;  // slot -> position in m.bypass_sides
+  PetscInt                   across = 0; // candidates in another patch than their fastener's
   for (size_t k = 0; k < m.elements.size(); ++k) {
     const FieldElement &e   = m.elements[k];
     const PetscInt      pos = a->patches.owned[e.owned].index;
@@ -185,9 +186,11 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
               mb.p[i]                       = {Dot(u, sd.t1), Dot(u, sd.t2)};
             }
             m.bypass_members.push_back(mb);
+            across += pos != sd.pos;
           }
         }
   }
+  PetscCall(PetscInfo(nullptr, "Bypass bands: %zu candidate elements for %zu joint sides, %" PetscInt_FMT " of them in another patch than their fastener's\n", m.bypass_members.size(), m.bypass_sides.size(), across));
   // Sums laid out like the joints' natural rows (2 sides x kSums per joint); each rank reads its joints'.
   const PetscInt nj = (PetscInt)a->joints.size();
   PetscCall(VecCreateMPI(comm, 2 * kSums * m.joints.nlocal, 2 * kSums * m.joints.nglobal, &m.bypass_sums));
@@ -212,6 +215,11 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
   PetscCall(VecScatterCreate(m.bypass_force, from, m.bypass_force_local, to, &m.bypass_force_scatter));
   PetscCall(ISDestroy(&from));
   PetscCall(ISDestroy(&to));
+  // The footprint's reach along d ahead and behind, laid out the same: a footprint lies in one patch,
+  // and the ranks whose elements of another patch (across a seam) lie in its bands learn it from the
+  // rank holding it, so that the bands do not depend on how parts are cut between ranks.
+  PetscCall(VecDuplicate(m.bypass_force, &m.bypass_reach));
+  PetscCall(VecDuplicate(m.bypass_force_local, &m.bypass_reach_local));
   PetscFunctionReturn(0);
 }
 
@@ -237,16 +245,41 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
   PetscCall(VecAssemblyEnd(m.bypass_force));
   PetscCall(VecScatterBegin(m.bypass_force_scatter, m.bypass_force, m.bypass_force_local, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecScatterEnd(m.bypass_force_scatter, m.bypass_force, m.bypass_force_local, INSERT_VALUES, SCATTER_FORWARD));
+  // Each side's d in its joint's plane: the sheet's force on the fastener, t1 when there is none.
+  const size_t        nb = m.bypass_sides.size();
+  std::vector<double> dir(2 * nb);
+  {
+    const PetscScalar *fl;
+    PetscCall(VecGetArrayRead(m.bypass_force_local, &fl));
+    for (size_t i = 0; i < nb; ++i) {
+      const double P = std::hypot(fl[2 * i], fl[2 * i + 1]);
+      dir[2 * i]     = P > 0 ? fl[2 * i] / P : 1;
+      dir[2 * i + 1] = P > 0 ? fl[2 * i + 1] / P : 0;
+    }
+    PetscCall(VecRestoreArrayRead(m.bypass_force_local, &fl));
+  }
+  // The footprint's reach ahead and behind along d, from the rank that holds the footprint.
+  PetscCall(VecSet(m.bypass_reach, 0.0));
+  for (size_t i = 0; i < nb; ++i) {
+    const FieldMap::BypassSide &bs = m.bypass_sides[i];
+    if (bs.footprint.empty()) continue;
+    const PetscScalar v[2]   = {Extent(bs.footprint, dir[2 * i], dir[2 * i + 1]), Extent(bs.footprint, -dir[2 * i], -dir[2 * i + 1])};
+    const PetscInt    idx[2] = {2 * bs.slot, 2 * bs.slot + 1};
+    PetscCall(VecSetValues(m.bypass_reach, 2, idx, v, INSERT_VALUES));
+  }
+  PetscCall(VecAssemblyBegin(m.bypass_reach));
+  PetscCall(VecAssemblyEnd(m.bypass_reach));
+  PetscCall(VecScatterBegin(m.bypass_force_scatter, m.bypass_reach, m.bypass_reach_local, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(m.bypass_force_scatter, m.bypass_reach, m.bypass_reach_local, INSERT_VALUES, SCATTER_FORWARD));
 
   // Each element in a band adds its area-weighted d.N.d to its band: ahead (0) or behind (1).
   const double w = m.bypass_width, L = m.bypass_length, tol = 1e-9 * (w + L);
   PetscCall(VecSet(m.bypass_sums, 0.0));
-  const PetscScalar *fl;
-  PetscCall(VecGetArrayRead(m.bypass_force_local, &fl));
+  const PetscScalar *reach;
+  PetscCall(VecGetArrayRead(m.bypass_reach_local, &reach));
   for (const FieldMap::BypassMember &mb : m.bypass_members) {
     const FieldMap::BypassSide &bs = m.bypass_sides[mb.side];
-    const double                f1 = fl[2 * mb.side], f2 = fl[2 * mb.side + 1], P = std::hypot(f1, f2);
-    const double                d0 = P > 0 ? f1 / P : 1, d1 = P > 0 ? f2 / P : 0;
+    const double                d0 = dir[2 * mb.side], d1 = dir[2 * mb.side + 1];
     double                      amin = INFINITY, amax = -INFINITY, along = 0, across = 0; // along, across: the centroid's
     for (int i = 0; i < mb.nn; ++i) {
       const double a = mb.p[i][0] * d0 + mb.p[i][1] * d1;
@@ -256,8 +289,8 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
     }
     if (std::fabs(across) > w / 2) continue;
     int band;
-    if (along >= Extent(bs.footprint, d0, d1) - tol && amin <= L) band = 0;
-    else if (along <= -Extent(bs.footprint, -d0, -d1) + tol && -amax <= L) band = 1;
+    if (along >= reach[2 * mb.side] - tol && amin <= L) band = 0;
+    else if (along <= -reach[2 * mb.side + 1] + tol && -amax <= L) band = 1;
     else continue;
     const shell::SectionResults &r    = f.results[mb.elem];
     const double                 area = ElementArea(m.elements[mb.elem].geom);
@@ -269,7 +302,7 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
     for (int c = 0; c < 3; ++c) idx[c] = kSums * bs.slot + 3 * band + c;
     PetscCall(VecSetValues(m.bypass_sums, 3, idx, v, ADD_VALUES));
   }
-  PetscCall(VecRestoreArrayRead(m.bypass_force_local, &fl));
+  PetscCall(VecRestoreArrayRead(m.bypass_reach_local, &reach));
   PetscCall(VecAssemblyBegin(m.bypass_sums));
   PetscCall(VecAssemblyEnd(m.bypass_sums));
   PetscCall(VecScatterBegin(m.bypass_scatter, m.bypass_sums, m.bypass_local, INSERT_VALUES, SCATTER_FORWARD));
