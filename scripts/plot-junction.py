@@ -25,7 +25,14 @@ NAME.model.json), and writes into OUT_DIR:
   else fields.h5; the strip is the scene's -output_bypass_width, the splices' pitch along a row);
 - hysteresis.png: the joint's overall deflection over the load cycle: the rotation across the
   side-of-body joint (from the skins' spanwise displacements on either side of the splices,
-  fields.h5) against the load factor, with the linear model.
+  fields.h5) against the load factor, with the linear model;
+- springs.csv (with --compare): what the linear springs get right and wrong, per splice and level:
+  the splice's whole load (the sum of its fasteners' in-plane forces), each row's share of it, the
+  most loaded fastener, the range of each fastener's load over its spring's, the largest difference
+  between neighbours along a row in the middle half of the row (over the row's mean load:
+  clearances make neighbours differ, springs do not), and the counts of sticking, sliding and
+  bearing fasteners; and, at the last step of the load path, the largest force left in each splice
+  (springs leave none when unloaded).
 Only the right wing is charted for a model with both wings.
 """
 import argparse
@@ -209,6 +216,38 @@ def summary_figure(a, base, model, steps, summary, right, at, lin, lcol, table):
     plt.close(fig)
 
 
+def springs_table(path, steps, at, lin, right, splices):
+    """springs.csv: the frictional run against the linear springs (lin: force at load factor 1)."""
+    def neighbours(loads):
+        """Largest jump between neighbours in the middle half of a row, over the row's mean."""
+        mid = loads[len(loads) // 4: 3 * len(loads) // 4]
+        if len(mid) < 2 or np.mean(mid) <= 0:
+            return float("nan")
+        return float(np.max(np.abs(np.diff(mid))) / np.mean(mid))
+    last = max(steps)
+    levels = list(at.items()) + ([(float(next(iter(steps[last].values()))["load"]), last)] if last not in at.values() else [])
+    with open(path, "w") as fh:
+        fh.write("splice,level,total_frictional,total_linear,total_ratio,shares_frictional,shares_linear,max_frictional,max_linear,"
+                 "ratio_min,ratio_max,neighbours_frictional,neighbours_linear,stick_frictional,slide_frictional,bearing_frictional\n")
+        for sp in splices:
+            js = [j for j, m in right.items() if m["splice"] == sp]
+            rows = sorted({int(right[j]["row"]) for j in js})
+            by_row = {r: sorted((j for j in js if int(right[j]["row"]) == r), key=lambda j: float(right[j]["position"])) for r in rows}
+            for lv, st in levels:
+                fr = {j: force(steps[st][j]) for j in js}
+                li = {j: abs(lv) * lin[j] for j in js}
+                tf, tl = sum(fr.values()), sum(li.values())
+                share = lambda f, t: "/".join(f"{sum(f[j] for j in by_row[r]) / t:.3f}" if t > 0 else "nan" for r in rows)
+                jump = lambda f: max((neighbours([f[j] for j in by_row[r]]) for r in rows), default=float("nan"))
+                states = [steps[st][j]["state"] for j in js]
+                # Each fastener's load over its spring's (the fasteners that carry at least 1 % of the splice's most).
+                ratios = [fr[j] / li[j] for j in js if li[j] > 0.01 * max(li.values())] if tl > 0 else []
+                rmin, rmax = (min(ratios), max(ratios)) if ratios else (float("nan"), float("nan"))
+                fh.write(f"{sp},{lv:g},{tf:.1f},{tl:.1f},{tf / tl if tl > 0 else float('nan'):.4f},{share(fr, tf)},{share(li, tl)},"
+                         f"{max(fr.values()):.1f},{max(li.values()):.1f},{rmin:.3f},{rmax:.3f},{jump(fr):.3f},{jump(li):.3f},"
+                         f"{states.count('stick')},{states.count('slide')},{states.count('contact')}\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("results")
@@ -236,7 +275,11 @@ def main():
         ls, _ = read_run(a.compare)
         last = max(ls)
         lam = float(next(iter(ls[last].values()))["load"])
+        if lam == 0:
+            sys.exit(f"plot-junction.py: the last step of {a.compare} is unloaded: --compare takes a linear run that ends at a load "
+                     "factor (e.g. -load_table 1 -load_steps 1)")
         lin = {j: (main_load(meta[j]["splice"], r) / lam, r) for j, r in ls[last].items() if j in meta}
+        lin_force = {j: force(r) / abs(lam) for j, r in ls[last].items() if j in meta}
     os.makedirs(a.out, exist_ok=True)
     right = {j: m for j, m in meta.items() if m["side"] == "right" and m["splice"] in SPLICES}
     splices = [s for s in SPLICES if any(m["splice"] == s for m in right.values())]
@@ -404,6 +447,8 @@ def main():
         plt.close(fig)
         if not drawn:
             print("plot-junction.py: every bypass load is NaN (the strip, -output_bypass_width, holds no element outside the footprints)")
+    if lin:
+        springs_table(os.path.join(a.out, "springs.csv"), steps, at, lin_force, right, splices)
     summary_figure(a, base, model, steps, summary, right, at, lin, lcol, table)
     print(f"plot-junction.py: charts of {summary['scene']} at {', '.join(f'{lv:g} g' for lv in at)} in {a.out}/")
     return 0

@@ -78,10 +78,20 @@ add_test(NAME wing_tiny_springs_vs_identify
 set_tests_properties(wing_tiny_springs_vs_identify PROPERTIES FIXTURES_REQUIRED wing_tiny_scene)
 # The load-transfer charts read the run and the metadata.
 add_test(NAME wing_tiny_plot
-  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1\" \"$2\" -o \"$3\" --compare \"$4\" && test -s \"$3/load-transfer.png\" && test -s \"$3/hysteresis.png\" && test -s \"$3/bypass.png\""
+  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1\" \"$2\" -o \"$3\" --compare \"$4\" && for f in load-transfer.png row-share.png states.png most-loaded.csv most-loaded.png junction.png hysteresis.png bypass.png springs.csv; do test -s \"$3/$f\" || { echo \"$f not written\"; exit 1; }; done"
           ${PROJECT_SOURCE_DIR}/scripts/plot-junction.py ${BOLTNET_OUT}/wing_tiny_np1 ${_wf}/tiny.yaml ${BOLTNET_OUT}/wing_tiny_charts
           ${BOLTNET_OUT}/wing_tiny_linear_np1)
-set_tests_properties(wing_tiny_plot PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np1;wing_tiny_linear_np1")
+set_tests_properties(wing_tiny_plot PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_np1;wing_tiny_linear_np1" FIXTURES_SETUP wing_tiny_charts)
+# springs.csv, the frictional run against the linear springs: its columns hold together; and the
+# linear run compared with itself gives every ratio 1 and the same shares, maxima and neighbour
+# differences on both sides (check_springs_table.py).
+add_test(NAME wing_tiny_springs_table COMMAND ${BOLTNET_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/check_springs_table.py ${BOLTNET_OUT}/wing_tiny_charts/springs.csv)
+set_tests_properties(wing_tiny_springs_table PROPERTIES FIXTURES_REQUIRED wing_tiny_charts)
+add_test(NAME wing_tiny_springs_table_same
+  COMMAND sh -c "${BOLTNET_PYTHON} \"$0\" \"$1\" \"$2\" -o \"$3\" --compare \"$1\" --levels 1 && ${BOLTNET_PYTHON} \"$4\" \"$3/springs.csv\" --same"
+          ${PROJECT_SOURCE_DIR}/scripts/plot-junction.py ${BOLTNET_OUT}/wing_tiny_linear_np1 ${_wf}/tiny.yaml ${BOLTNET_OUT}/wing_tiny_charts_same
+          ${CMAKE_CURRENT_SOURCE_DIR}/check_springs_table.py)
+set_tests_properties(wing_tiny_springs_table_same PROPERTIES FIXTURES_REQUIRED "wing_tiny_scene;wing_tiny_linear_np1")
 
 # Every fastener a linear spring (the scene's override file): the half model against the model of
 # both wings, mirror-symmetric loads (check_junction_symmetry.py). The half model runs at the
