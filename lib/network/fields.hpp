@@ -70,6 +70,7 @@ struct FieldMap {
     std::array<std::array<double, 2>, 4> p;         // the element's nodes (t1, t2 from the fastener)
   };
   double                    bypass_width = 0, bypass_length = 0;
+  double                    bypass_peak = 0; // the largest bearing load so far, over all joints and steps
   std::vector<BypassSide>   bypass_sides;
   std::vector<BypassMember> bypass_members;
   VecScatter                bypass_scatter = nullptr, bypass_force_scatter = nullptr; // the second also for the reach

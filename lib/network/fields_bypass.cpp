@@ -233,6 +233,16 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
     const double    sign = side ? 1 : -1;
     return std::array<double, 2>{sign * re.force[1], sign * re.force[2]};
   };
+  // A force below a millionth of the largest bearing load so far is taken as none (d = t1): its
+  // direction would be round-off, which differs with the number of ranks.
+  double peak = 0;
+  for (size_t k = 0; k < a->joints.size(); ++k) {
+    const std::array<double, 2> fs = force(k, 0);
+    peak                           = std::max(peak, std::hypot(fs[0], fs[1]));
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &peak, 1, MPI_DOUBLE, MPI_MAX, a->comm));
+  m.bypass_peak     = std::max(m.bypass_peak, peak);
+  const double none = 1e-6 * m.bypass_peak;
   for (size_t k = 0; k < a->joints.size(); ++k) {
     const JointComp &j = a->joints.comp[k];
     for (int side = 0; side < 2; ++side) {
@@ -253,8 +263,8 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
     PetscCall(VecGetArrayRead(m.bypass_force_local, &fl));
     for (size_t i = 0; i < nb; ++i) {
       const double P = std::hypot(fl[2 * i], fl[2 * i + 1]);
-      dir[2 * i]     = P > 0 ? fl[2 * i] / P : 1;
-      dir[2 * i + 1] = P > 0 ? fl[2 * i + 1] / P : 0;
+      dir[2 * i]     = P > none ? fl[2 * i] / P : 1;
+      dir[2 * i + 1] = P > none ? fl[2 * i + 1] / P : 0;
     }
     PetscCall(VecRestoreArrayRead(m.bypass_force_local, &fl));
   }
@@ -287,10 +297,13 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
       along += a / mb.nn;
       across += (-mb.p[i][0] * d1 + mb.p[i][1] * d0) / mb.nn;
     }
-    if (std::fabs(across) > w / 2) continue;
+    // Every bound is taken with a tolerance: on a structured mesh centroids and nodes fall exactly on
+    // w / 2, L and the footprint's reach, and a round-off tilt of d must not move them in or out
+    // (the bands would then depend on the number of ranks).
+    if (std::fabs(across) > w / 2 + tol) continue;
     int band;
-    if (along >= reach[2 * mb.side] - tol && amin <= L) band = 0;
-    else if (along <= -reach[2 * mb.side + 1] + tol && -amax <= L) band = 1;
+    if (along >= reach[2 * mb.side] - tol && amin <= L + tol) band = 0;
+    else if (along <= -reach[2 * mb.side + 1] + tol && -amax <= L + tol) band = 1;
     else continue;
     const shell::SectionResults &r    = f.results[mb.elem];
     const double                 area = ElementArea(m.elements[mb.elem].geom);
@@ -316,7 +329,7 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
       const PetscScalar          *q  = s + (2 * k + side) * kSums;
       const std::array<double, 2> fs = force(k, side);
       BypassRow                   b{j.id, side, side ? j.patch_b : j.patch_a, (PetscInt)(q[2] + q[5]), std::hypot(fs[0], fs[1]), {0, 0, 0}, w, L, NAN, NAN, NAN, NAN};
-      for (int c = 0; c < 3; ++c) b.d[c] = b.bearing > 0 ? (fs[0] * j.R[3 + c] + fs[1] * j.R[6 + c]) / b.bearing : j.R[3 + c];
+      for (int c = 0; c < 3; ++c) b.d[c] = b.bearing > none ? (fs[0] * j.R[3 + c] + fs[1] * j.R[6 + c]) / b.bearing : j.R[3 + c];
       double ahead = q[1] > 0 ? q[0] / q[1] : NAN, behind = q[4] > 0 ? q[3] / q[4] : NAN;
       if (!std::isnan(ahead) || !std::isnan(behind)) {
         if (!std::isnan(ahead) && !std::isnan(behind)) b.balance = (ahead - behind) * w - b.bearing;
