@@ -104,8 +104,6 @@ PetscErrorCode NearbySides(BoltnetAssembly a, const FieldMap &m, double margin, 
   PetscFunctionReturn(0);
 }
 
-} // namespace
-
 // The farthest a point set reaches along (d0, d1) in the joint's plane (0 for none: the fastener).
 double Extent(const std::vector<std::array<double, 2>> &pts, double d0, double d1)
 {
@@ -113,6 +111,16 @@ double Extent(const std::vector<std::array<double, 2>> &pts, double d0, double d
   for (const auto &p : pts) e = std::max(e, p[0] * d0 + p[1] * d1);
   return e;
 }
+
+// A point's coordinates in a joint side's plane: along t1 and t2 from the fastener at x.
+template <class Point>
+std::array<double, 2> InPlane(const Point &X, const std::array<double, 3> &x, const std::array<double, 3> &t1, const std::array<double, 3> &t2)
+{
+  const std::array<double, 3> u = {X[0] - x[0], X[1] - x[1], X[2] - x[2]};
+  return {Dot(u, t1), Dot(u, t2)};
+}
+
+} // namespace
 
 PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double width, double length)
 {
@@ -175,16 +183,9 @@ PetscErrorCode FieldMapBypassRegions(BoltnetAssembly a, FieldMap &m, double widt
             FieldMap::BypassSide &bs = m.bypass_sides[at->second];
             // The footprint's nodes, where its extent along d is known: on the ranks holding its patch.
             if (fp && bs.footprint.empty())
-              for (PetscInt i : sp->joint_nodes[sd.node - sp->mesh.x.size()].footprint) {
-                const auto                 &X = sp->mesh.x[i];
-                const std::array<double, 3> u = {X[0] - sd.x[0], X[1] - sd.x[1], X[2] - sd.x[2]};
-                bs.footprint.push_back({Dot(u, sd.t1), Dot(u, sd.t2)});
-              }
+              for (PetscInt i : sp->joint_nodes[sd.node - sp->mesh.x.size()].footprint) bs.footprint.push_back(InPlane(sp->mesh.x[i], sd.x, sd.t1, sd.t2));
             FieldMap::BypassMember mb{(PetscInt)k, (PetscInt)at->second, e.nn, {}};
-            for (int i = 0; i < e.nn; ++i) {
-              const std::array<double, 3> u = {e.geom.X[i][0] - sd.x[0], e.geom.X[i][1] - sd.x[1], e.geom.X[i][2] - sd.x[2]};
-              mb.p[i]                       = {Dot(u, sd.t1), Dot(u, sd.t2)};
-            }
+            for (int i = 0; i < e.nn; ++i) mb.p[i] = InPlane(e.geom.X[i], sd.x, sd.t1, sd.t2);
             m.bypass_members.push_back(mb);
             across += pos != sd.pos;
           }
@@ -292,9 +293,9 @@ PetscErrorCode AssemblyBypass(BoltnetAssembly a, FieldMap &m, const StepFields &
     const double                d0 = dir[2 * mb.side], d1 = dir[2 * mb.side + 1];
     double                      amin = INFINITY, amax = -INFINITY, along = 0, across = 0; // along, across: the centroid's
     for (int i = 0; i < mb.nn; ++i) {
-      const double a = mb.p[i][0] * d0 + mb.p[i][1] * d1;
-      amin = std::min(amin, a), amax = std::max(amax, a);
-      along += a / mb.nn;
+      const double t = mb.p[i][0] * d0 + mb.p[i][1] * d1; // the node along d
+      amin = std::min(amin, t), amax = std::max(amax, t);
+      along += t / mb.nn;
       across += (-mb.p[i][0] * d1 + mb.p[i][1] * d0) / mb.nn;
     }
     // Every bound is taken with a tolerance: on a structured mesh centroids and nodes fall exactly on
