@@ -1,12 +1,14 @@
 #!/bin/bash
 # check_restart.sh: a run killed with SIGKILL after a checkpoint and restarted from it ends with the
 # results of the run that was not interrupted (docs/scenes.md, "Checkpoint and restart").
-#   check_restart.sh MPIEXEC BOLTNET RANKS RESTART_RANKS EVERY REFERENCE_DIR OUT_DIR RTOL [--fields JOINTS_CSV FIELDS_RTOL] -- ARGS...
+#   check_restart.sh MPIEXEC BOLTNET RANKS RESTART_RANKS EVERY REFERENCE_DIR OUT_DIR RTOL [--fields JOINTS_CSV FIELDS_RTOL] [--short FILE] -- ARGS...
 # 1. boltnet ARGS -checkpoint_every EVERY on RANKS ranks, in a session of its own; as soon as the first
 #    checkpoint (step EVERY) is on disk every process of the session is killed with SIGKILL. The test
 #    fails if the run had finished by then: it would not have tested a kill.
 # 2. A checkpoint.h5.tmp of garbage is left beside the checkpoint (a kill during a checkpoint's
-#    write), and the run is restarted on RESTART_RANKS ranks with -restart.
+#    write); with --short, FILE of the output directory (fields.h5, joints.h5) is left shorter than
+#    its superblock records (shorten_h5.py), as a kill while HDF5 extended it can leave it, so that
+#    the restart must extend it. The run is restarted on RESTART_RANKS ranks with -restart.
 # 3. joints.csv and/or joints.h5, whichever REFERENCE_DIR has, against REFERENCE_DIR's (compare_csv.py,
 #    check_joint_table.py: RTOL of each quantity's scale), summary.json's
 #    record of the steps and, with --fields, fields.h5 + fields.xdmf (check_fields.py --ref, FIELDS_RTOL).
@@ -15,6 +17,8 @@ mpiexec=$1 boltnet=$2 ranks=$3 restart_ranks=$4 every=$5 ref=$6 out=$7 rtol=$8
 shift 8
 fields=''
 if [ "$1" = --fields ]; then fields=$2 fields_rtol=$3; shift 3; fi
+short=''
+if [ "$1" = --short ]; then short=$2; shift 2; fi
 [ "$1" = -- ] && shift
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 py=/usr/bin/python3
@@ -52,6 +56,7 @@ else
 fi
 
 head -c 1000 /dev/urandom > "$ckpt.tmp"
+if [ -n "$short" ]; then "$py" "$here/shorten_h5.py" "$out/$short" || die "could not shorten $out/$short"; fi
 "$mpiexec" -n "$restart_ranks" --oversubscribe "$boltnet" "$@" -output_dir "$out" -restart "$ckpt" > "$out.restart.log" 2>&1
 status=$?
 cat "$out.restart.log"

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <hdf5.h>
+#include <string>
 
 namespace boltnet {
 
@@ -18,5 +19,12 @@ struct H5Id {
   }
   operator hid_t() const { return id; }
 };
+
+// A file that a kill left shorter than the end of file its HDF5 superblock records: HDF5 had
+// allocated space for what it was writing (a step's fields, a row of joints.h5) and recorded it
+// before the data reached the disk, and it then refuses the whole file ("truncated file"). The file
+// is extended with zeros to that end, so that HDF5 opens it again and the restart can remove what
+// was being written. A file that is not short, not there or not HDF5 is left as it is. "" or why not.
+std::string ExtendShortHDF5(const std::string &path);
 
 } // namespace boltnet

@@ -165,6 +165,12 @@ std::string Resume(BoltnetAssembly a, Output *out, const std::string &table)
   std::string       why  = out->files.csv ? JointsLength(csv, k, (size_t)a->layout.njoints, &keep) : "";
   if (why.empty()) why = table;
   if (!why.empty()) return why;
+  // A kill while a step's fields were written can leave fields.h5 shorter than its superblock says;
+  // extended to that end, HDF5 opens it, and the step is removed below with the others after k.
+  if (out->fields) {
+    why = ExtendShortHDF5(out->dir + "/fields.h5");
+    if (!why.empty()) return "Cannot continue the fields in " + out->dir + "/fields.h5: " + why + " (-output_fields false restarts without fields)";
+  }
   ErrorLog log;
   if (PetscPushErrorHandler(CaptureErrorHandler, &log)) return "PETSc error";
   if (out->fields && OpenFields(&out->ff, k)) why = "Cannot continue the fields in " + out->dir + "/fields.h5: " + ErrorText(log) + " (-output_fields false restarts without fields)";
