@@ -7,7 +7,7 @@
 #    fails if the run had finished by then: it would not have tested a kill.
 # 2. A checkpoint.h5.tmp of garbage is left beside the checkpoint (a kill during a checkpoint's
 #    write); with --short, FILE of the output directory (fields.h5, joints.h5) is left shorter than
-#    its superblock records (shorten_h5.py), as a kill while HDF5 extended it can leave it, so that
+#    its superblock records (damage_fields.py --short), as a kill while HDF5 extended it can leave it, so that
 #    the restart must extend it. The run is restarted on RESTART_RANKS ranks with -restart.
 # 3. joints.csv and/or joints.h5, whichever REFERENCE_DIR has, against REFERENCE_DIR's (compare_csv.py,
 #    check_joint_table.py: RTOL of each quantity's scale), summary.json's
@@ -56,7 +56,7 @@ else
 fi
 
 head -c 1000 /dev/urandom > "$ckpt.tmp"
-if [ -n "$short" ]; then "$py" "$here/shorten_h5.py" "$out/$short" || die "could not shorten $out/$short"; fi
+if [ -n "$short" ]; then "$py" "$here/damage_fields.py" --short "$out/$short" || die "could not shorten $out/$short"; fi
 "$mpiexec" -n "$restart_ranks" --oversubscribe "$boltnet" "$@" -output_dir "$out" -restart "$ckpt" > "$out.restart.log" 2>&1
 status=$?
 cat "$out.restart.log"

@@ -17,7 +17,7 @@ set_tests_properties(restart_killed_fig3a_np1 PROPERTIES PROCESSORS 1 ENVIRONMEN
 set_tests_properties(restart_killed_fig3a_np2 PROPERTIES PROCESSORS 2 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED fig3a_np2)
 # A kill while HDF5 extends fields.h5 can leave the file shorter than the end its superblock records
 # (HDF5 then refuses all of it: "truncated file"; measured on this test's killed run, 328 bytes
-# short): the same kill, fields.h5 then left short (shorten_h5.py), and the restart extends it
+# short): the same kill, fields.h5 then left short (damage_fields.py --short), and the restart extends it
 # (ExtendShortHDF5) and ends as restart_killed_fig3a_np2. Before, the restart stopped, unable to open
 # fields.h5.
 add_test(NAME restart_short_fields_fig3a_np2

@@ -77,7 +77,7 @@ add_test(NAME restart_killed_chain_table_np2_to_np3
           -- -scene ${_chain} -load_steps 50 -output_joints hdf5)
 set_tests_properties(restart_killed_chain_table_np2_to_np3 PROPERTIES PROCESSORS 3 ENVIRONMENT "${BOLTNET_ENV}" FIXTURES_REQUIRED chain_long_table_np2)
 # The same with joints.h5 left shorter than its superblock records, as a kill while HDF5 extended it
-# can leave it (shorten_h5.py): rank 0 extends it before the 3 ranks of the restart open it.
+# can leave it (damage_fields.py --short): rank 0 extends it before the 3 ranks of the restart open it.
 add_test(NAME restart_short_chain_table_np2_to_np3
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/check_restart.sh ${MPIEXEC_EXECUTABLE} $<TARGET_FILE:boltnet_driver> 2 3 10 ${BOLTNET_OUT}/chain_long_table_np2 ${BOLTNET_OUT}/restart_short_chain_table 1e-10
           --short joints.h5 -- -scene ${_chain} -load_steps 50 -output_joints hdf5)
