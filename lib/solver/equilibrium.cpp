@@ -321,7 +321,7 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   const bool   on_disk  = icntl22 != 0;
   const bool   lagged   = preonly && AutoTakesLagged(a->isolve, ratio, on_disk);
   a->isolve.flops_per_entry = ratio;
-  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.3g flops for %.3g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry%s %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, on_disk ? "_on_disk" : "",
+  PetscCall(PetscInfo(F, "-interface_solve auto: %s (MUMPS estimates %.6g flops for %.6g entries of the factors: %.0f per entry against -interface_lagged_flops_per_entry%s %g%s%s)\n", lagged ? "lagged" : "direct", (double)flops, nentries, ratio, on_disk ? "_on_disk" : "",
                       (double)(on_disk ? a->isolve.lagged_flops_per_entry_on_disk : a->isolve.lagged_flops_per_entry), on_disk ? (a->isolve.ew_default ? "; factors on disk" : "; factors on disk, without Eisenstat-Walker's tolerances") : "", preonly ? "" : "; the KSP is not the default's"));
   if (!lagged) {
     PetscCall(AssemblyDropDefaultEW(a)); // a direct solve has no Krylov tolerance to set
@@ -340,12 +340,75 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
   PetscFunctionReturn(0);
 }
 
-// MUMPS's symbolic factorisation, then the two choices above (factors on disk, and the automatic
-// interface solve): F's own symbolic operation, wrapped (MatSetOperation) so that every analysis
-// PCSetUp makes, the first and any after a change of nonzero pattern, is followed by the choices
-// before its numeric factorisation.
+// MUMPS's fill-reducing ordering for the interface Jacobian (ICNTL(7)). Left to itself (7), MUMPS
+// takes METIS or SCOTCH where it was built with them, else PORD, Debian's case. On the plate grids,
+// whose interface is a planar net of dense port blocks, QAMD's factorisation has a sixth fewer flops
+// than PORD's (1M-dof grid: 1.66e10 against 2.00e10) and took 13 % less time; on the wing-fuselage
+// junction PORD's has a third fewer (medium: 1.11e12 against 1.76e12). So the first analysis is made
+// with each candidate on a factor of its own, and F gets the ordering whose factorisation MUMPS
+// estimates cheapest (RINFOG(1), global: every rank chooses alike), if that is at least a tenth below
+// MUMPS's own choice: the time of a factorisation follows more than its flops (on plate-grid, QAMD's
+// 5 % fewer flops took no less time with two BLAS threads), so a smaller gain keeps MUMPS's choice. An
+// analysis costs a fraction of
+// a factorisation (medium: 1.4 and 0.6 s against 41 s), and the choice is kept for the run's later
+// analyses (a cut-back's new PC), so it is made once (docs/solver.md, "What a factorisation of the
+// interface costs").
+//
+// The ordering goes in through the options database, -mat_mumps_icntl_7 under the assembly's prefix,
+// for the one analysis that reads it: on one rank PETSc sets ICNTL(7) = 7 when it initialises the
+// MUMPS instance, after what MatMumpsSetIcntl gave the factor before it, and before it reads the
+// options.
+using SymbolicFn = PetscErrorCode (*)(Mat, Mat, IS, IS, const MatFactorInfo *);
+
+static PetscErrorCode SymbolicWithOrdering(BoltnetAssembly a, SymbolicFn symbolic, Mat F, Mat A, IS row, IS col, const MatFactorInfo *info, PetscInt ordering)
+{
+  const std::string name = "-" + a->prefix + "mat_mumps_icntl_7";
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsSetValue(nullptr, name.c_str(), std::to_string(ordering).c_str()));
+  const PetscErrorCode ierr = symbolic(F, A, row, col, info);
+  PetscCall(PetscOptionsClearValue(nullptr, name.c_str())); // also when the analysis failed
+  PetscCall(ierr);
+  PetscFunctionReturn(0);
+}
+
+static PetscErrorCode ChooseOrdering(BoltnetAssembly a, Mat F, Mat A, IS row, IS col, const MatFactorInfo *info)
+{
+  PetscFunctionBeginUser;
+  if (a->isolve.ordering >= 0) PetscFunctionReturn(0);
+  const PetscInt  candidates[] = {7, 6, 2}; // MUMPS's own choice first, QAMD, AMF
+  const PetscReal gain         = 0.9;       // another ordering only where it is estimated this much of MUMPS's own choice, or less
+  PetscReal       best = PETSC_MAX_REAL, own = PETSC_MAX_REAL;
+  PetscInt        pick = 7, picked_used = -1;
+  for (PetscInt c : candidates) {
+    Mat       T;
+    PetscInt  info1, used;
+    PetscReal flops;
+    PetscCall(MatGetFactor(A, MATSOLVERMUMPS, MAT_FACTOR_LU, &T));
+    PetscCall(SymbolicWithOrdering(a, MatLUFactorSymbolic, T, A, row, col, info, c));
+    PetscCall(MatMumpsGetInfog(T, 1, &info1));
+    PetscCall(MatMumpsGetInfog(T, 7, &used)); // the ordering MUMPS used (7: which one it took)
+    PetscCall(MatMumpsGetRinfog(T, 1, &flops));
+    PetscCall(MatDestroy(&T));
+    if (info1 < 0) continue; // F's own analysis reports what fails
+    PetscCall(PetscInfo(F, "ICNTL(7) = %" PetscInt_FMT " (MUMPS used %" PetscInt_FMT "): the factorisation estimated at %g flops\n", c, used, (double)flops));
+    if (c == 7) own = flops;
+    if (c == 7 ? flops < best : flops < best && flops <= gain * own) {
+      best        = flops;
+      pick        = c;
+      picked_used = used;
+    }
+  }
+  a->isolve.ordering = pick;
+  PetscCall(PetscInfo(F, "the interface's ordering: ICNTL(7) = %" PetscInt_FMT " (MUMPS's ordering %" PetscInt_FMT ", %g flops)\n", pick, picked_used, (double)best));
+  PetscFunctionReturn(0);
+}
+
+// MUMPS's symbolic factorisation, preceded by the choice of its ordering and followed by the two
+// choices above (factors on disk, and the automatic interface solve): F's own symbolic operation,
+// wrapped (MatSetOperation) so that every analysis PCSetUp makes, the first and any after a change
+// of nonzero pattern, is followed by the choices before its numeric factorisation.
 struct AnalysisChoice {
-  PetscErrorCode (*symbolic)(Mat, Mat, IS, IS, const MatFactorInfo *);
+  SymbolicFn      symbolic;
   BoltnetAssembly a;
 };
 
@@ -356,7 +419,10 @@ static PetscErrorCode SymbolicThenChoose(Mat F, Mat A, IS row, IS col, const Mat
   PetscFunctionBeginUser;
   PetscCall(PetscObjectQuery((PetscObject)F, "boltnet_analysis_choice", (PetscObject *)&container));
   PetscCall(PetscContainerGetPointer(container, (void **)&choice));
-  PetscCall(choice->symbolic(F, A, row, col, info));
+  if (choice->a->isolve.choose_ordering) {
+    PetscCall(ChooseOrdering(choice->a, F, A, row, col, info));
+    PetscCall(SymbolicWithOrdering(choice->a, choice->symbolic, F, A, row, col, info, choice->a->isolve.ordering));
+  } else PetscCall(choice->symbolic(F, A, row, col, info));
   if (choice->a->isolve.out_of_core && !choice->a->isolve.factors_on_disk) PetscCall(ChooseFactorStorage(choice->a, F));
   if (choice->a->isolve.solve_auto) PetscCall(ChooseInterfaceSolve(choice->a, F));
   PetscFunctionReturn(0);
@@ -374,7 +440,7 @@ static PetscErrorCode WrapSymbolic(BoltnetAssembly a, Mat F)
   PetscCheck(symbolic, a->comm, PETSC_ERR_PLIB, "MUMPS's factor has no symbolic LU factorisation");
   PetscCall(PetscNew(&choice));
   choice->a        = a;
-  choice->symbolic = (PetscErrorCode(*)(Mat, Mat, IS, IS, const MatFactorInfo *))symbolic;
+  choice->symbolic = (SymbolicFn)symbolic;
   PetscCall(PetscContainerCreate(a->comm, &container));
   PetscCall(PetscContainerSetPointer(container, choice));
   PetscCall(PetscContainerSetUserDestroy(container, PetscContainerUserDestroyDefault));
@@ -408,7 +474,7 @@ PetscErrorCode AssemblySetUpNullPivots(BoltnetAssembly a)
   if (a->isolve.factors_on_disk) PetscCall(MatMumpsSetIcntl(F, 22, 1)); // out-of-core factors (MUMPS_OOC_TMPDIR)
   // After MUMPS's analysis: out of core if the factors will not fit, and the automatic choice of
   // the interface solve.
-  if ((a->isolve.out_of_core && !a->isolve.factors_on_disk) || a->isolve.solve_auto) PetscCall(WrapSymbolic(a, F));
+  if ((a->isolve.out_of_core && !a->isolve.factors_on_disk) || a->isolve.solve_auto || a->isolve.choose_ordering) PetscCall(WrapSymbolic(a, F));
   PetscFunctionReturn(0);
 }
 

@@ -215,6 +215,7 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCall(PetscOptionsBool("-interface_out_of_core", "Keep the factors on disk (MUMPS ICNTL(22) = 1, in the directory MUMPS_OOC_TMPDIR names) when MUMPS's analysis estimates more memory for them in core than a node has (-interface_memory_mb), or when a factorisation runs out of memory (INFOG(1) = -13, or -19 under -mat_mumps_icntl_23; it is factored again on disk); false keeps them in memory and stops on such a failure: docs/solver.md", "AssemblySetUpSolver", a->isolve.out_of_core, &a->isolve.out_of_core, nullptr));
   PetscCall(PetscOptionsReal("-interface_memory_mb", "Memory in MB that the factorisation may take on each node, against MUMPS's in-core estimate summed over the node's ranks (0: what the node has available, /proc/meminfo's MemAvailable within the process's cgroup limit)", "AssemblySetUpSolver", a->isolve.memory_mb, &a->isolve.memory_mb, nullptr));
   PetscCall(PetscOptionsInt("-interface_refactor_its", "Lagged interface solve: refactor the preconditioner when the last Krylov solve took more than this many iterations or failed", "AssemblySetUpSolver", a->isolve.refactor_its, &a->isolve.refactor_its, nullptr));
+  PetscCall(PetscOptionsBool("-interface_choose_ordering", "At MUMPS's first analysis of the Jacobian, analyse it also with the QAMD and AMF orderings and factor with the ordering whose factorisation MUMPS estimates cheapest (RINFOG(1)); false: MUMPS's own choice (ICNTL(7) = 7); -mat_mumps_icntl_7 decides alone: docs/solver.md", "AssemblySetUpSolver", a->isolve.choose_ordering, &a->isolve.choose_ordering, nullptr));
   PetscCall(PetscOptionsReal("-interface_keep_ratio", "Direct interface solve: keep the Jacobian and its factorisation from an earlier Newton iterate while the residual falls by at least this factor per iteration and no joint changes state (modified Newton; 0: refactor at every iteration): docs/solver.md", "AssemblySetUpSolver", a->isolve.keep_ratio, &a->isolve.keep_ratio, nullptr));
   PetscOptionsEnd();
   PetscCheck(a->isolve.keep_ratio >= 0 && a->isolve.keep_ratio < 1, a->comm, PETSC_ERR_USER_INPUT, "-interface_keep_ratio %g must be in [0, 1): the factor by which the residual must fall per iteration for the factorisation to be kept (0: never kept)", (double)a->isolve.keep_ratio);
@@ -223,6 +224,9 @@ PetscErrorCode AssemblySetUpSolver(BoltnetAssembly a)
   PetscCheck(a->isolve.lagged_flops_per_entry_on_disk > 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_lagged_flops_per_entry_on_disk %g must be > 0", (double)a->isolve.lagged_flops_per_entry_on_disk);
   PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_22", &a->isolve.storage_given));
   if (a->isolve.storage_given) a->isolve.out_of_core = PETSC_FALSE;
+  PetscBool ordering_given;
+  PetscCall(PetscOptionsHasName(nullptr, a->prefix.empty() ? nullptr : a->prefix.c_str(), "-mat_mumps_icntl_7", &ordering_given));
+  if (ordering_given) a->isolve.choose_ordering = PETSC_FALSE;
   PetscCheck(a->isolve.memory_mb >= 0, a->comm, PETSC_ERR_USER_INPUT, "-interface_memory_mb %g must be >= 0 (0: what the node has available)", (double)a->isolve.memory_mb);
   // -interface_matis: GMRES with BDDC at every Jacobian; neither MUMPS's analysis (auto) nor a
   // kept factorisation (lagged) applies.
