@@ -340,18 +340,17 @@ static PetscErrorCode ChooseInterfaceSolve(BoltnetAssembly a, Mat F)
 }
 
 // MUMPS's fill-reducing ordering for the interface Jacobian (ICNTL(7)). Left to itself (7), MUMPS
-// takes METIS or SCOTCH where it was built with them, else PORD, Debian's case. On the plate grids,
-// whose interface is a planar net of dense port blocks, QAMD's factorisation has a sixth fewer flops
-// than PORD's (1M-dof grid: 1.66e10 against 2.00e10) and took 13 % less time; on the wing-fuselage
-// junction PORD's has a third fewer (medium: 1.11e12 against 1.76e12). So the first analysis is made
-// with each candidate on a factor of its own, and F gets the ordering whose factorisation MUMPS
-// estimates cheapest (RINFOG(1), global: every rank chooses alike), if that is at least a tenth below
-// MUMPS's own choice: the time of a factorisation follows more than its flops (on plate-grid, QAMD's
-// 5 % fewer flops took no less time with two BLAS threads), so a smaller gain keeps MUMPS's choice. An
-// analysis costs a fraction of
-// a factorisation (medium: 1.4 and 0.6 s against 41 s), and the choice is kept for the run's later
-// analyses (a cut-back's new PC), so it is made once (docs/solver.md, "What a factorisation of the
-// interface costs").
+// takes METIS or SCOTCH where it was built with them, else PORD, Debian's case. Which ordering is
+// best depends on the interface: on the 1M-dof plate grid QAMD's factorisation has a sixth fewer
+// flops than PORD's (1.66e10 against 2.00e10) and took 14 % less time; on the medium wing-fuselage
+// junction QAMD's has 1.6 times PORD's and AMF's 0.59 of it (6.56e11 against 1.11e12; 21 s against
+// 30 s). So the first analysis is made with each candidate on a factor of its own, and F gets the
+// ordering whose factorisation MUMPS estimates cheapest (RINFOG(1), global: every rank chooses
+// alike) if that is at least a tenth below MUMPS's own choice: a factorisation's time follows the
+// shape of its tree too (on plate-grid QAMD's 5 % fewer flops took no less time with two BLAS
+// threads). An analysis costs a fraction of a factorisation (medium: 1.4 and 0.6 s against 41 s),
+// and the choice is kept for the run's later analyses (a cut-back's new PC), so it is made once
+// (docs/solver.md, "What a factorisation of the interface costs").
 //
 // The ordering goes in through the options database, -mat_mumps_icntl_7 under the assembly's prefix,
 // for the one analysis that reads it: on one rank PETSc sets ICNTL(7) = 7 when it initialises the

@@ -50,9 +50,10 @@ struct InterfaceSolve {
   PetscBool factors_on_disk = PETSC_FALSE;
   PetscInt  factorisations = 0, krylov_its = 0, linear_solves = 0; // the record, for summary.json
   // The fill-reducing ordering of MUMPS's analysis (ICNTL(7)): with choose_ordering, the first
-  // analysis tries MUMPS's own choice, QAMD and AMF and keeps the one it estimates cheapest
-  // (solver/equilibrium.cpp, ChooseOrdering); ordering is then that value for every later analysis
-  // of the run (-1: not chosen yet). The user's -mat_mumps_icntl_7 decides alone.
+  // analysis tries MUMPS's own choice, QAMD and AMF and keeps the one it estimates cheapest, if a
+  // tenth below its own choice (solver/equilibrium.cpp, ChooseOrdering); ordering is then that value
+  // for every later analysis of the run (-1: not chosen yet). The user's -mat_mumps_icntl_7 decides
+  // alone.
   PetscBool choose_ordering = PETSC_TRUE;
   PetscInt  ordering        = -1;
   // -interface_matis: J's MATIS, the preconditioning matrix of PCBDDC, and its linear part; the
