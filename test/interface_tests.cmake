@@ -223,8 +223,8 @@ boltnet_expect(failed_solve_no_log 1 --fail --match "Could not locate solver typ
 # The interface's ordering (-interface_choose_ordering, docs/solver.md, "What a factorisation of the
 # interface costs"): on a 16 x 4 plate grid QAMD's factorisation is the cheapest, 0.83 of the flops
 # of MUMPS's own choice (PORD here), and the run must pick it and factor with it; on the 12 x 2 grid
-# QAMD saves only 0.075, under the tenth that a change of ordering needs, and MUMPS's own choice must
-# stay. The reference is MUMPS's analysis with each ordering given by the user (-mat_mumps_icntl_7 7,
+# QAMD's is 0.925 of MUMPS's own choice (AMF there), under the tenth that a change of ordering needs,
+# and MUMPS's own choice must stay. The reference is MUMPS's analysis with each ordering given by the user (-mat_mumps_icntl_7 7,
 # 6, 2), whose flops the trials must reproduce and whose joints.csv the chosen run must equal; a
 # user's ordering leaves boltnet no choice (check_ordering.py). 1, 2 and 3 ranks.
 add_test(NAME make_plate_grid_16x4
