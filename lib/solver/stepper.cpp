@@ -354,16 +354,18 @@ PetscErrorCode RoundOffBound(BoltnetAssembly a, Vec X, Vec w, Vec b)
   PetscCall(VecGetLocalSize(X, &n));
   PetscCall(VecGetSize(X, &N));
   PetscCall(VecGetOwnershipRange(X, &rstart, nullptr));
-  PetscCall(VecGetArrayRead(X, &x)); // the largest translation and rotation: dof 0-2 and 3-5 of a node
+  // The largest translation and rotation: dof 0-2 and 3-5 of a node (J has block size 6, so every
+  // rank's rows start at a node: network/jacobian.cpp).
+  PetscCall(VecGetArrayRead(X, &x));
   for (PetscInt i = 0; i < n; ++i) loc[(rstart + i) % 6 < 3 ? 0 : 1] = std::max(loc[(rstart + i) % 6 < 3 ? 0 : 1], PetscAbsScalar(x[i]));
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(MPIU_Allreduce(loc, big, 2, MPIU_REAL, MPIU_MAX, a->comm));
   PetscCall(VecGetArray(w, &z));
   for (PetscInt i = 0; i < n; ++i) z[i] = big[(rstart + i) % 6 < 3 ? 0 : 1];
   PetscCall(VecRestoreArray(w, &z));
-  Vec          sized;
+  Vec                sized;
   const PetscScalar *s, *jx;
-  PetscScalar *t;
+  PetscScalar       *t;
   PetscCall(VecDuplicate(X, &sized));
   PetscCall(AbsMultApply(&a->checks.roundoff, a->checks.Jlast, w, sized)); // |J| z
   PetscCall(AbsMultApply(&a->checks.roundoff, a->checks.Jlast, X, b));     // |J| |x|
@@ -411,14 +413,14 @@ PetscErrorCode AtFloorInBalance(BoltnetAssembly a, Vec X, Vec F, PetscReal fnorm
   PetscCall(VecAbs(share));
   PetscInt row;
   PetscCall(VecMax(share, &row, &worst)); // the largest |F_i| / bound_i
-  if (worst > 1) PetscCall(PetscInfo(snes, "Not at the round-off floor: row %" PetscInt_FMT " has |F_i| %g times 100 eps (|J| |x| + t)_i\n", row, (double)worst));
+  if (worst > 1) PetscCall(PetscInfo(snes, "Not at the round-off floor: row %" PetscInt_FMT " has |F_i| %g times its round-off bound\n", row, (double)worst));
   PetscCall(VecDestroy(&share));
   PetscCall(VecDestroy(&bound));
   if (worst <= 1) {
     Equilibrium eq;
     PetscCall(AssemblyEquilibrium(a, X, &eq));
     if (eq.ratio <= a->checks.equilibrium_rtol) {
-      PetscCall(PetscInfo(snes, "Converged to round-off: every |F_i| <= 100 eps (|J| |x| + t)_i (||F|| %g), %s\n", (double)fnorm, DescribeEquilibrium(eq).c_str()));
+      PetscCall(PetscInfo(snes, "Converged to round-off: every |F_i| within its round-off bound (||F|| %g), %s\n", (double)fnorm, DescribeEquilibrium(eq).c_str()));
       *floor = PETSC_TRUE;
     } else PetscCall(PetscInfo(snes, "At the round-off floor of every row but not in balance: %s\n", DescribeEquilibrium(eq).c_str()));
   }
