@@ -228,10 +228,6 @@ PetscErrorCode AssemblyBuildNetwork(BoltnetAssembly a);
 // Residual and Jacobian (network/residual.cpp, network/jacobian.cpp).
 PetscErrorCode AssemblyFormFunction(SNES snes, Vec X, Vec F, void *ctx);
 PetscErrorCode AssemblyFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx);
-// Each row's sum of the magnitudes of the residual's terms other than the linear part Jbase x
-// (joint forces, load terms, applied and held forces, constrained rows): with |J| |x| the scale of
-// the round-off in that row of F (solver/stepper.cpp, the round-off test).
-PetscErrorCode AssemblyResidualTerms(BoltnetAssembly a, Vec X, Vec T);
 // Evaluate every local joint at X against the committed history (no side effects): as the solver
 // sees it (frozen joints as linear springs), or with the full law everywhere (network/joints.cpp).
 PetscErrorCode AssemblyEvaluateJoints(BoltnetAssembly a, Vec X, std::vector<Response> &out, std::vector<Vec6> *jumps = nullptr, bool full_law = false);

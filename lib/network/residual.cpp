@@ -4,8 +4,6 @@
 #include "core/log.hpp"
 #include "network/internal.hpp"
 
-#include <cmath>
-
 namespace boltnet {
 
 PetscErrorCode GetLocalX(BoltnetAssembly a, Vec X, Vec *Xl, const PetscScalar **x)
@@ -81,77 +79,6 @@ static PetscErrorCode AssemblyFormFunctionImpl(SNES snes, Vec X, Vec F, void *ct
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(VecRestoreArray(F, &f));
   PetscCall(PetscLogEventEnd(Events().residual, 0, 0, 0, 0));
-  PetscFunctionReturn(0);
-}
-
-namespace {
-
-// |Q^T| |f| and the moments of its transfer to the node with |d|: each entry the sum of the
-// magnitudes of the products GlobalForce and NodeLoad add up for that entry.
-Vec6 NodeLoadMagnitude(const PetscReal R[9], const PetscReal d[3], const Vec6 &f)
-{
-  Vec6 g{};
-  for (int blk = 0; blk < 2; ++blk)
-    for (int k = 0; k < 3; ++k)
-      for (int i = 0; i < 3; ++i) g[3 * blk + k] += std::abs(R[3 * i + k] * f[3 * blk + i]);
-  const Vec6 m = g;
-  g[3] += std::abs(d[1]) * m[2] + std::abs(d[2]) * m[1];
-  g[4] += std::abs(d[2]) * m[0] + std::abs(d[0]) * m[2];
-  g[5] += std::abs(d[0]) * m[1] + std::abs(d[1]) * m[0];
-  return g;
-}
-
-} // namespace
-
-// The terms of AssemblyFormFunction other than Jbase x, by magnitude: the joint forces as rotated
-// and moved to their nodes, the condensed patches' load terms, the applied and held forces, and
-// on a constrained row |u| + |lambda value| + |held value|.
-PetscErrorCode AssemblyResidualTerms(BoltnetAssembly a, Vec X, Vec T)
-{
-  Vec                   Xl, Tl;
-  const PetscScalar    *x, *xl;
-  PetscScalar          *t;
-  std::vector<Response> resp;
-  PetscFunctionBeginUser;
-  PetscCall(GetLocalX(a, X, &Xl, &xl));
-  EvaluateJoints(a->joints, xl, a->opt.tangent, false, resp, nullptr);
-  PetscCall(RestoreLocalX(a, &Xl, &xl));
-  PetscCall(DMGetLocalVector(a->net.dm, &Tl));
-  PetscCall(VecSet(Tl, 0.0));
-  PetscCall(VecGetArray(Tl, &t));
-  const JointSet &js = a->joints;
-  for (size_t k = 0; k < js.size(); ++k) {
-    const Vec6 gb = NodeLoadMagnitude(js.comp[k].R, js.comp[k].db, resp[k].force), ga = NodeLoadMagnitude(js.comp[k].R, js.comp[k].da, resp[k].force);
-    for (int i = 0; i < 6; ++i) {
-      t[js.ob[k] + i] += gb[i];
-      t[js.oa[k] + i] += ga[i];
-    }
-  }
-  for (const OwnedPatch &op : a->patches.owned) {
-    if (!op.shell || !a->layout.shells.at(op.index).condensed) continue;
-    for (PetscInt r = 0; r < op.cond.nb; ++r) t[op.loff + r] += std::abs(a->lambda_target * op.cond.c[r]);
-    for (size_t r = 0; r < op.cond.c_held.size(); ++r) t[op.loff + r] += std::abs(op.cond.c_held[r]);
-  }
-  PetscCall(VecRestoreArray(Tl, &t));
-  PetscCall(VecSet(T, 0.0));
-  PetscCall(DMLocalToGlobalBegin(a->net.dm, Tl, ADD_VALUES, T));
-  PetscCall(DMLocalToGlobalEnd(a->net.dm, Tl, ADD_VALUES, T));
-  PetscCall(DMRestoreLocalVector(a->net.dm, &Tl));
-
-  PetscInt rstart;
-  PetscCall(VecGetOwnershipRange(T, &rstart, nullptr));
-  PetscCall(VecGetArray(T, &t));
-  PetscCall(VecGetArrayRead(X, &x));
-  const Boundary  &bc = a->bc;
-  const HeldLoads &h  = a->held;
-  for (size_t i = 0; i < bc.force_rows.size(); ++i) t[bc.force_rows[i] - rstart] += std::abs(a->lambda_target * bc.force_values[i]);
-  for (size_t i = 0; i < h.force_rows.size(); ++i) t[h.force_rows[i] - rstart] += std::abs(h.force_values[i]);
-  for (size_t i = 0; i < bc.dirichlet_rows.size(); ++i) {
-    const PetscInt r = bc.dirichlet_rows[i] - rstart;
-    t[r]             = std::abs(x[r]) + std::abs(a->lambda_target * bc.dirichlet_values[i]) + (h.dirichlet.empty() ? 0.0 : std::abs(h.dirichlet[i]));
-  }
-  PetscCall(VecRestoreArrayRead(X, &x));
-  PetscCall(VecRestoreArray(T, &t));
   PetscFunctionReturn(0);
 }
 

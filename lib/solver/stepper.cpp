@@ -341,8 +341,8 @@ PetscErrorCode ConvergedInBalanceImpl(SNES snes, PetscInt it, PetscReal xnorm, P
   PetscFunctionReturn(0);
 }
 
-// The scale of each row's round-off (the comment in AtFloorInBalance): b_i = (|J| |x| + t)_i, or
-// (|J| |x| + |J| z)_i where (|J| |x| + t)_i is itself at the round-off of the solution's size. w is
+// The scale of each row's round-off (the comment in AtFloorInBalance): b_i = (|J| |x|)_i, or
+// (|J| |x| + |J| z)_i where (|J| |x|)_i is itself at the round-off of the solution's size. w is
 // work space of X's layout.
 PetscErrorCode RoundOffBound(BoltnetAssembly a, Vec X, Vec w, Vec b)
 {
@@ -363,22 +363,19 @@ PetscErrorCode RoundOffBound(BoltnetAssembly a, Vec X, Vec w, Vec b)
   PetscCall(VecGetArray(w, &z));
   for (PetscInt i = 0; i < n; ++i) z[i] = big[(rstart + i) % 6 < 3 ? 0 : 1];
   PetscCall(VecRestoreArray(w, &z));
-  Vec                sized;
-  const PetscScalar *s, *jx;
-  PetscScalar       *t;
+  Vec sized;
   PetscCall(VecDuplicate(X, &sized));
   PetscCall(AbsMultApply(&a->checks.roundoff, a->checks.Jlast, w, sized)); // |J| z
   PetscCall(AbsMultApply(&a->checks.roundoff, a->checks.Jlast, X, b));     // |J| |x|
-  PetscCall(AssemblyResidualTerms(a, X, w));                              // t
+  const PetscScalar *s;
+  PetscScalar       *y;
   PetscCall(VecGetArrayRead(sized, &s));
-  PetscCall(VecGetArrayRead(b, &jx));
-  PetscCall(VecGetArray(w, &t));
+  PetscCall(VecGetArray(b, &y));
   const PetscReal tiny = 1000.0 * (PetscReal)N * PETSC_MACHINE_EPSILON;
-  for (PetscInt i = 0; i < n; ++i) t[i] = jx[i] + t[i] > tiny * PetscRealPart(s[i]) ? jx[i] + t[i] : jx[i] + s[i];
-  PetscCall(VecRestoreArray(w, &t));
-  PetscCall(VecRestoreArrayRead(b, &jx));
+  for (PetscInt i = 0; i < n; ++i)
+    if (PetscRealPart(y[i]) <= tiny * PetscRealPart(s[i])) y[i] += s[i];
+  PetscCall(VecRestoreArray(b, &y));
   PetscCall(VecRestoreArrayRead(sized, &s));
-  PetscCall(VecCopy(w, b));
   PetscCall(VecDestroy(&sized));
   PetscFunctionReturn(0);
 }
@@ -392,18 +389,16 @@ PetscErrorCode AtFloorInBalance(BoltnetAssembly a, Vec X, Vec F, PetscReal fnorm
   PetscFunctionBeginUser;
   *floor = PETSC_FALSE;
   if (!a->checks.Jlast) PetscFunctionReturn(0);
-  // Row by row: |F_i| <= 100 eps (|J| |x| + t)_i, the round-off of the terms summed in that row. A
-  // row of a soft part is not judged by the stiffest row (a loader spring, a joint's rotational
-  // stiffness), nor a translation row by the size of the rotations. t_i counts the terms of F_i
-  // that are not products J_ij x_j (AssemblyResidualTerms): the joint forces (a sliding joint's
-  // friction, a pretension) and the applied loads.
-  // A row whose terms all nearly vanish (a dof on a plane of symmetry, u_i = 0 up to round-off)
+  // Row by row: |F_i| <= 100 eps (|J| |x|)_i, the round-off of the terms summed in that row. A row
+  // of a soft part is not judged by the stiffest row (a loader spring, a joint's rotational
+  // stiffness), nor a translation row by the size of the rotations.
+  // A row whose terms all nearly vanish (a dof the load leaves at zero, u_i = 0 up to round-off)
   // cannot be solved to that relative accuracy: a factorisation's solution is accurate relative to
   // the whole solution, not to each of its entries. As in the sparse backward error of Arioli,
   // Demmel and Duff (SIAM J. Matrix Anal. Appl. 10, 1989), such a row is judged by what its terms
   // would be at the size of the solution: (|J| z)_i, z_j the largest |x| of j's kind (translation
   // or rotation, so that neither is measured in the other's units). A row is one of these where
-  // (|J| |x| + t)_i <= 1000 n eps (|J| z)_i, n the number of rows.
+  // (|J| |x|)_i <= 1000 n eps (|J| z)_i, n the number of rows.
   PetscCall(VecDuplicate(X, &share));
   PetscCall(VecDuplicate(X, &bound));
   PetscCall(RoundOffBound(a, X, share, bound));
