@@ -356,12 +356,13 @@ PetscErrorCode RoundOffBound(BoltnetAssembly a, Vec X, Vec w, Vec b)
   PetscCall(VecGetOwnershipRange(X, &rstart, nullptr));
   // The largest translation and rotation: dof 0-2 and 3-5 of a node (J has block size 6, so every
   // rank's rows start at a node: network/jacobian.cpp).
+  const auto kind = [rstart](PetscInt i) { return (rstart + i) % 6 < 3 ? 0 : 1; };
   PetscCall(VecGetArrayRead(X, &x));
-  for (PetscInt i = 0; i < n; ++i) loc[(rstart + i) % 6 < 3 ? 0 : 1] = std::max(loc[(rstart + i) % 6 < 3 ? 0 : 1], PetscAbsScalar(x[i]));
+  for (PetscInt i = 0; i < n; ++i) loc[kind(i)] = std::max(loc[kind(i)], PetscAbsScalar(x[i]));
   PetscCall(VecRestoreArrayRead(X, &x));
   PetscCall(MPIU_Allreduce(loc, big, 2, MPIU_REAL, MPIU_MAX, a->comm));
   PetscCall(VecGetArray(w, &z));
-  for (PetscInt i = 0; i < n; ++i) z[i] = big[(rstart + i) % 6 < 3 ? 0 : 1];
+  for (PetscInt i = 0; i < n; ++i) z[i] = big[kind(i)];
   PetscCall(VecRestoreArray(w, &z));
   Vec sized;
   PetscCall(VecDuplicate(X, &sized));
