@@ -171,9 +171,9 @@ boltnet_expect(checkpoint_help 1 --match "-checkpoint_every <now 0 : formerly 0>
 # exact. 1e-10 is not exact enough for that: at fig3a's step 87 (initial residual 63 N, the step's
 # absolute tolerance 3e-9 N) GMRES may stop anywhere below 6.3e-9 N, and whether its last iterate
 # lands above or below 3e-9 N, and so whether Newton takes a second iteration, then depends on the
-# round-off of the 3-rank factorisation (a full run under load once took two there). At 1e-12 of the initial
-# residual every stop after the checkpoint lies below 0.56 of its step's tolerance (the largest:
-# step 48, where the load turns, 1.7e-9 N against 3e-9 N).
+# round-off of the 3-rank factorisation (a full run under load once took two there). At 1e-12 of
+# the initial residual every stop after the checkpoint lies below 0.56 of its step's tolerance (the
+# largest: step 48, where the load turns, 1.7e-9 N against 3e-9 N).
 # On 2 ranks the run killed at step 10 is restarted on 3, whose analysis makes the choice again.
 foreach(ranks 1 2)
   if(ranks EQUAL 1)
